@@ -1,0 +1,334 @@
+!> The double-Westergaard (DW) cohesive-zone model at a given contact half-width:
+!> equilibria (cases 1-3 of the paper's section 2), traction and gap profiles.
+!>
+!> Case 1 is solved for s = (C - A)/(1 - A) in (0, 1), with A = sin(pi a*), C = sin(pi c*):
+!> C - A = s (1 - A) and 1 - C = (1 - s)(1 - A) then carry no cancellation at either end,
+!> however small the zone (large mu: C - A ~ 1e-13) or however close c* is to 1/2.
+module wa_dw
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, wa_capacity_too_small, &
+      set_error
+   use wa_validate, only: check_range
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
+   use wa_elliptic, only: istar_scaled
+   use wa_kernels, only: wavy_gap_shape
+   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_math, only: log1p
+   implicit none
+   private
+
+   public :: dw_equilibrium, dw_roots, dw_residual, dw_traction, dw_gap
+
+   !> sin(pi a*) and the differences that must not be formed by subtraction.
+   type :: contact_geometry
+      real(wp) :: a_star, a, one_minus_a, one_minus_a2, cos_a
+   end type contact_geometry
+
+   integer, parameter :: max_iterations = 100
+   !> Points of the scan in dw_roots that looks for further sign changes.
+   integer, parameter :: scan_points = 48
+
+contains
+
+   !> Principal DW equilibrium at a*: the case-1 state if one exists, else case 2;
+   !> a* = 1/2 is full contact at the threshold load P* = 1 - Sigma0/2   (2.29).
+   pure subroutine dw_equilibrium(params, a_star, state, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      type(state_type), intent(out) :: state
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(contact_geometry) :: geo
+      real(wp) :: g_top, s
+
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return
+      geo = geometry(a_star)
+      if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
+         state = special_state(params, geo)
+         return
+      end if
+      g_top = residual(params, geo, 0.0_wp)
+      if (g_top <= 0.0_wp) then          ! (2.28b) holds: no case-1 root
+         state = case2_state(params, geo)
+         return
+      end if
+      call solve_case1(params, geo, g_top, s, status, errmsg)
+      if (status /= wa_ok) return
+      state = case1_state(params, geo, s)
+   end subroutine dw_equilibrium
+
+   !> Every DW equilibrium at a*: case-1 roots by increasing c* (each sign change of
+   !> the residual on a scan is bracketed and refined), then the case-2 state where
+   !> (2.28b) holds. n_roots is the total; if it exceeds size(states), the first ones
+   !> are stored and status = wa_capacity_too_small.
+   pure subroutine dw_roots(params, a_star, states, n_roots, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      type(state_type), intent(inout) :: states(:)
+      integer, intent(out) :: n_roots
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: found(scan_points)
+      real(wp) :: u(scan_points), g(scan_points), s
+      type(contact_geometry) :: geo
+      integer :: i
+
+      n_roots = 0
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return
+      geo = geometry(a_star)
+      if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
+         n_roots = 1
+         found(1) = special_state(params, geo)
+      else
+         u = scan_abscissae(params, geo)
+         do i = 1, scan_points
+            g(i) = residual(params, geo, u(i))
+         end do
+         do i = 1, scan_points - 1
+            if (g(i)*g(i + 1) > 0.0_wp .or. g(i) == 0.0_wp) cycle
+            call refine(params, geo, u(i), g(i), u(i + 1), g(i + 1), s, status, errmsg)
+            if (status /= wa_ok) return
+            n_roots = n_roots + 1
+            found(n_roots) = case1_state(params, geo, s)
+         end do
+         if (residual(params, geo, 0.0_wp) < 0.0_wp) then
+            n_roots = n_roots + 1
+            found(n_roots) = case2_state(params, geo)
+         end if
+      end if
+      states(1:min(n_roots, size(states))) = found(1:min(n_roots, size(states)))
+      if (n_roots > size(states)) then
+         call set_error(wa_capacity_too_small, "states: capacity too small for all roots", &
+            status, errmsg)
+      end if
+   end subroutine dw_roots
+
+   !> The case-1 equation (2.25b) as G(u) = ln(lambda (1+lambda) (16/(pi alpha^2)) I*),
+   !> u = ln s, s = (C - A)/(1 - A). G < 0 below the root, G(0) is (2.28b)'s left side.
+   !> Written as ln(4 Sigma0^2 (C^2-A^2) W (1+1/lambda) / (pi alpha^2 (1-A^2))), with
+   !> W = I*/(C^2-A^2)^2, so nothing overflows when lambda is huge.
+   pure function dw_residual(params, a_star, u) result(g)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, u
+      real(wp) :: g
+      g = residual(params, geometry(a_star), u)
+   end function dw_residual
+
+   !> Total DW surface traction p/p* at x* (period 1) for a solved state:
+   !>   (1+lambda) p_W(a) - lambda p_W(c), p_W(a) = 2 cos(pi x) sqrt(A^2 - sin^2(pi x))
+   !>   (2.3a), (2.10); 0 where the surfaces are apart and out of range.
+   elemental function dw_traction(params, state, x_star) result(p)
+      type(params_type), intent(in) :: params
+      type(state_type), intent(in) :: state
+      real(wp), intent(in) :: x_star
+      real(wp) :: p
+      real(wp) :: a, c, lambda, xr, s, cx
+
+      call state_factors(params, state, a, c, lambda)
+      xr = abs(x_star - anint(x_star))
+      s = sin(pi*xr)
+      cx = cos(pi*xr)
+      p = 0.0_wp
+      if (s < a) p = 2.0_wp*(1.0_wp + lambda)*cx*sqrt((a - s)*(a + s))
+      if (s < c) p = p - 2.0_wp*lambda*cx*sqrt((c - s)*(c + s))
+   end function dw_traction
+
+   !> DW gap h/Delta at x* for a solved state: (1+lambda) h_W(a) - lambda h_W(c), where
+   !> h_W(a) = 2 [S sqrt(S^2-A^2) - A^2 ln((S+sqrt(S^2-A^2))/A)] (corrected (2.16),
+   !> MODEL-NOTES.md); zero inside the contact.
+   elemental function dw_gap(params, state, x_star) result(h)
+      type(params_type), intent(in) :: params
+      type(state_type), intent(in) :: state
+      real(wp), intent(in) :: x_star
+      real(wp) :: h
+      real(wp) :: a, c, lambda, s
+
+      call state_factors(params, state, a, c, lambda)
+      s = sin(pi*abs(x_star - anint(x_star)))
+      h = (1.0_wp + lambda)*wavy_gap_shape(a, s) - lambda*wavy_gap_shape(c, s)
+   end function dw_gap
+
+
+   ! ---------------------------------------------------------------- internals
+
+   pure function residual(params, geo, u) result(g)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: u
+      real(wp) :: g
+      real(wp) :: c, d2, omc2, inv_lambda
+
+      call zone_of(geo, exp(u), c, d2, omc2)
+      inv_lambda = 2.0_wp*sqrt(geo%one_minus_a2)*sqrt(d2)/params%sigma0   ! (2.25b)
+      g = log(4.0_wp*params%sigma0**2/(pi*params%alpha**2*geo%one_minus_a2)) + log(d2) &
+         + log(istar_scaled(geo%a, c, d2, omc2)) + log1p(inv_lambda)
+   end function residual
+
+   pure function geometry(a_star) result(geo)
+      real(wp), intent(in) :: a_star
+      type(contact_geometry) :: geo
+      geo%a_star = a_star
+      geo%a = sin(pi*a_star)
+      geo%cos_a = sin(pi*(0.5_wp - a_star))
+      geo%one_minus_a = 2.0_wp*sin(0.5_wp*pi*(0.5_wp - a_star))**2   ! 1 - sin = 2 sin^2((pi/2 - x)/2)
+      geo%one_minus_a2 = geo%cos_a**2
+   end function geometry
+
+   !> C, C^2 - A^2 and 1 - C^2 from s without cancellation.
+   pure subroutine zone_of(geo, s, c, d2, omc2)
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: s
+      real(wp), intent(out) :: c, d2, omc2
+      real(wp) :: d
+      d = s*geo%one_minus_a
+      c = geo%a + d
+      d2 = d*(2.0_wp*geo%a + d)
+      omc2 = (1.0_wp - s)*geo%one_minus_a*(1.0_wp + c)
+   end subroutine zone_of
+
+   !> Bracket the case-1 root in u = ln s around the large-mu estimate
+   !> C - A = 2 alpha^2 sqrt(1-A^2)/Sigma0^2 (where G ~ ln s + const), then refine.
+   pure subroutine solve_case1(params, geo, g_top, s, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: g_top
+      real(wp), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: step = log(4.0_wp), u_floor = log(tiny(1.0_wp))
+      real(wp) :: u_lo, g_lo, u_hi, g_hi, u0
+
+      u0 = large_mu_estimate(params, geo)
+      u_hi = 0.0_wp
+      g_hi = g_top
+      u_lo = min(u0, log(0.5_wp))
+      g_lo = residual(params, geo, u_lo)
+      do while (g_lo > 0.0_wp)            ! walk down until the bracket closes
+         u_hi = u_lo; g_hi = g_lo
+         u_lo = u_lo - step
+         if (u_lo < u_floor) then
+            s = 0.0_wp
+            call set_error(wa_no_solution, "dw: no case-1 root could be bracketed", &
+               status, errmsg)
+            return
+         end if
+         g_lo = residual(params, geo, u_lo)
+      end do
+      if (u_hi == 0.0_wp .and. u_lo + step < 0.0_wp) then   ! tighten the upper end
+         g_hi = residual(params, geo, u_lo + step)
+         if (g_hi >= 0.0_wp) then
+            u_hi = u_lo + step
+         else
+            u_lo = u_lo + step; g_lo = g_hi; g_hi = g_top
+         end if
+      end if
+      call refine(params, geo, u_lo, g_lo, u_hi, g_hi, s, status, errmsg)
+   end subroutine solve_case1
+
+   !> Brent on G(u) over a bracket [u1, u2]; s = exp(root).
+   pure subroutine refine(params, geo, u1, g1, u2, g2, s, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: u1, g1, u2, g2
+      real(wp), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: u
+      logical :: done
+      integer :: iter
+
+      call brent_init(solver, u1, g1, u2, g2, 4.0_wp*epsilon(1.0_wp))
+      do iter = 1, max_iterations
+         call brent_propose(solver, u, done)
+         if (done) exit
+         call brent_accept(solver, residual(params, geo, u))
+      end do
+      s = exp(solver%b)
+      if (.not. done) then
+         call set_error(wa_not_converged, "dw: case-1 root did not converge", status, errmsg)
+      else
+         status = wa_ok
+      end if
+   end subroutine refine
+
+   !> Case-1 state from s: P* = A^2 - (Sigma0/2) sqrt((C^2-A^2)/(1-A^2))   (2.25a)
+   pure function case1_state(params, geo, s) result(state)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: s
+      type(state_type) :: state
+      real(wp) :: c, d2, omc2, cos_c
+
+      call zone_of(geo, s, c, d2, omc2)
+      cos_c = sqrt(omc2)
+      ! sin(pi(c*-a*)) = (C^2-A^2)/(C cos(pi a*) + A cos(pi c*)): no cancellation
+      state%gap_width = atan2(d2/(c*geo%cos_a + geo%a*cos_c), cos_c*geo%cos_a + c*geo%a)/pi
+      state%a_star = geo%a_star
+      state%c_star = geo%a_star + state%gap_width
+      state%p_star = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
+      state%zone_case = zone_inside
+   end function case1_state
+
+   !> Case 2: c* = 1/2, P* = A^2 - Sigma0/2   (2.28a)
+   pure function case2_state(params, geo) result(state)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      type(state_type) :: state
+      state%a_star = geo%a_star
+      state%c_star = 0.5_wp
+      state%gap_width = 0.5_wp - geo%a_star
+      state%p_star = geo%a**2 - 0.5_wp*params%sigma0
+      state%zone_case = zone_whole_period
+   end function case2_state
+
+   !> a* = 1/2 (full contact at its threshold, (2.29)) and Sigma0 = 0 (Westergaard).
+   pure function special_state(params, geo) result(state)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      type(state_type) :: state
+      state = case2_state(params, geo)
+      if (geo%a_star == 0.5_wp) state%zone_case = zone_full_contact
+   end function special_state
+
+   !> A, C and lambda = Sigma0/(2 sqrt(1-A^2) sqrt(C^2-A^2)) of a state   (2.25b)
+   pure subroutine state_factors(params, state, a, c, lambda)
+      type(params_type), intent(in) :: params
+      type(state_type), intent(in) :: state
+      real(wp), intent(out) :: a, c, lambda
+      real(wp) :: d2
+      a = sin(pi*state%a_star)
+      c = sin(pi*state%c_star)
+      d2 = sin(pi*state%gap_width)*sin(pi*(state%a_star + state%c_star))
+      lambda = 0.0_wp
+      if (d2 > 0.0_wp .and. state%zone_case /= zone_full_contact) &
+         lambda = params%sigma0/(2.0_wp*sin(pi*(0.5_wp - state%a_star))*sqrt(d2))
+   end subroutine state_factors
+
+   !> Abscissae u = ln s for the root scan: log-spaced from far below the principal
+   !> root up to s -> 1.
+   pure function scan_abscissae(params, geo) result(u)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp) :: u(scan_points)
+      real(wp) :: u_lo, u_hi
+      integer :: i
+      u_lo = min(large_mu_estimate(params, geo), log(0.5_wp)) - 8.0_wp
+      u_hi = log1p(-epsilon(1.0_wp))
+      do i = 1, scan_points
+         u(i) = u_lo + (u_hi - u_lo)*real(i - 1, wp)/real(scan_points - 1, wp)
+      end do
+   end function scan_abscissae
+
+   !> ln s at the large-mu root: C - A = 2 alpha^2 sqrt(1-A^2)/Sigma0^2.
+   pure function large_mu_estimate(params, geo) result(u)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp) :: u
+      u = log(2.0_wp*params%alpha**2*geo%cos_a/params%sigma0**2) - log(geo%one_minus_a)
+   end function large_mu_estimate
+
+end module wa_dw

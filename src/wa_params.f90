@@ -1,0 +1,126 @@
+!> The two dimensionless parameters (alpha, mu) and what derives from them, with a
+!> validating constructor and the conversion from SI inputs (SPEC section 3).
+module wa_params
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok
+   use wa_validate, only: check_range
+   implicit none
+   private
+
+   public :: params_type, new_params, dimensional_params, reduced_modulus
+   public :: scales_type
+
+   !> Dimensionless model parameters.
+   type :: params_type
+      !> Johnson's parameter alpha = sqrt(2 dgamma L / (pi^2 E* Delta^2)) > 0
+      real(wp) :: alpha = 0.0_wp
+      !> Transition parameter mu = Sigma0 / (pi (alpha^2/32)^(1/3)) >= 0   (2.19) corrected
+      real(wp) :: mu = 0.0_wp
+      !> Peak adhesive stress over p*: Sigma0 = pi mu (alpha^2/32)^(1/3)   (2.25c)
+      real(wp) :: sigma0 = 0.0_wp
+      !> Maugis-Dugdale opening Dcod = (alpha^4/2)^(1/3)/mu (+Infinity at mu = 0)   (A7)
+      real(wp) :: dcod = 0.0_wp
+   end type params_type
+
+   !> SI scales that turn the dimensionless results back into physical ones.
+   type :: scales_type
+      !> Reduced modulus E* [Pa]
+      real(wp) :: estar = 0.0_wp
+      !> Full-contact pressure p* = pi E* Delta / L [Pa]: mean traction = P* p*
+      real(wp) :: pressure = 0.0_wp
+      !> Force per period and unit depth for P* = 1: p* L [N/m]
+      real(wp) :: force = 0.0_wp
+      !> Period L [m]: a = a* L, c = c* L
+      real(wp) :: length = 0.0_wp
+      !> Crest radius R = L^2 / (4 pi^2 Delta) [m]   (2.1b)
+      real(wp) :: radius = 0.0_wp
+   end type scales_type
+
+contains
+
+   !> Validating constructor: alpha in (0, inf), mu in [0, inf).
+   pure subroutine new_params(alpha, mu, params, status, errmsg)
+      real(wp), intent(in) :: alpha, mu
+      type(params_type), intent(out) :: params
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      call check_range("alpha", alpha, 0.0_wp, huge(1.0_wp), "(0, inf)", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("mu", mu, 0.0_wp, huge(1.0_wp), "[0, inf)", status, errmsg, &
+         hi_open=.true.)
+      if (status /= wa_ok) return
+      params%alpha = alpha
+      params%mu = mu
+      params%sigma0 = pi*mu*(alpha**2/32.0_wp)**(1.0_wp/3.0_wp)
+      if (mu > 0.0_wp) then
+         params%dcod = (alpha**4/2.0_wp)**(1.0_wp/3.0_wp)/mu
+      else
+         params%dcod = ieee_value(params%dcod, ieee_positive_inf)
+      end if
+   end subroutine new_params
+
+   !> Reduced modulus 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2   (2.2b)
+   pure subroutine reduced_modulus(e1, nu1, e2, nu2, estar, status, errmsg)
+      real(wp), intent(in) :: e1, nu1, e2, nu2
+      real(wp), intent(out) :: estar
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      estar = 0.0_wp
+      call check_range("E1", e1, 0.0_wp, huge(1.0_wp), "(0, inf) Pa", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("E2", e2, 0.0_wp, huge(1.0_wp), "(0, inf) Pa", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("nu1", nu1, -1.0_wp, 0.5_wp, "(-1, 1/2]", status, errmsg, lo_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("nu2", nu2, -1.0_wp, 0.5_wp, "(-1, 1/2]", status, errmsg, lo_open=.true.)
+      if (status /= wa_ok) return
+      estar = 1.0_wp/((1.0_wp - nu1**2)/e1 + (1.0_wp - nu2**2)/e2)
+   end subroutine reduced_modulus
+
+   !> Dimensionless parameters and SI scales from E* [Pa], period L [m], amplitude
+   !> Delta [m], work of adhesion dgamma [J/m^2] and peak adhesive stress sigma0 [Pa].
+   !> alpha = sqrt(2 dgamma L/(pi^2 E* Delta^2)), Sigma0 = sigma0/p*, mu from Sigma0.
+   pure subroutine dimensional_params(estar, period, amplitude, work_of_adhesion, &
+         peak_stress, params, scales, status, errmsg)
+      real(wp), intent(in) :: estar, period, amplitude, work_of_adhesion, peak_stress
+      type(params_type), intent(out) :: params
+      type(scales_type), intent(out) :: scales
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: big = huge(1.0_wp)
+      real(wp) :: alpha, mu, pstar
+
+      call check_range("Estar", estar, 0.0_wp, big, "(0, inf) Pa", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("period", period, 0.0_wp, big, "(0, inf) m", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("amplitude", amplitude, 0.0_wp, big, "(0, inf) m", status, errmsg, &
+         lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("work_of_adhesion", work_of_adhesion, 0.0_wp, big, "(0, inf) J/m^2", &
+         status, errmsg, lo_open=.true., hi_open=.true.)
+      if (status /= wa_ok) return
+      call check_range("peak_stress", peak_stress, 0.0_wp, huge(1.0_wp), "[0, inf) Pa", &
+         status, errmsg, hi_open=.true.)
+      if (status /= wa_ok) return
+
+      pstar = pi*estar*amplitude/period
+      alpha = sqrt(2.0_wp*work_of_adhesion*period/(pi**2*estar*amplitude**2))
+      mu = (peak_stress/pstar)/(pi*(alpha**2/32.0_wp)**(1.0_wp/3.0_wp))
+      call new_params(alpha, mu, params, status, errmsg)
+      if (status /= wa_ok) return
+      scales%estar = estar
+      scales%pressure = pstar
+      scales%force = pstar*period
+      scales%length = period
+      scales%radius = period**2/(4.0_wp*pi**2*amplitude)
+
+   end subroutine dimensional_params
+
+end module wa_params

@@ -1,0 +1,26 @@
+!> An equilibrium state of a cohesive-zone model at a given contact half-width.
+module wa_state
+   use wa_kinds, only: wp
+   implicit none
+   private
+
+   !> Zone cases (SPEC section 4): 1 a* < c* < 1/2, 2 a* < c* = 1/2, 3 full contact.
+   integer, parameter, public :: zone_inside = 1, zone_whole_period = 2, zone_full_contact = 3
+
+   !> Models, named as in SPEC section 4 (values shared with the C header).
+   integer, parameter, public :: model_westergaard = 0, model_jkr = 1, model_dw = 2, model_md = 3
+
+   type, public :: state_type
+      !> Contact half-width over the period, a*
+      real(wp) :: a_star = 0.0_wp
+      !> Interaction-zone half-width over the period, c* (1/2 in case 2)
+      real(wp) :: c_star = 0.0_wp
+      !> c* - a*, kept separately: accurate where the zone collapses (large mu)
+      real(wp) :: gap_width = 0.0_wp
+      !> Load per period over p* L (negative = tensile)
+      real(wp) :: p_star = 0.0_wp
+      !> 1, 2 or 3 (zone_inside, zone_whole_period, zone_full_contact)
+      integer :: zone_case = 0
+   end type state_type
+
+end module wa_state

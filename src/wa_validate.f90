@@ -1,0 +1,57 @@
+!> Argument checks shared by every public entry point: each failure names the
+!> argument, its value and its valid range.
+module wa_validate
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_invalid_argument, set_error
+   implicit none
+   private
+
+   public :: check_range
+
+contains
+
+   !> status = wa_ok if lo <(=) x <(=) hi, else wa_invalid_argument with a message
+   !> such as "a_star = 7.0E-01 is outside its valid range [0, 1/2]".
+   pure subroutine check_range(name, x, lo, hi, range_text, status, errmsg, &
+         lo_open, hi_open)
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: x, lo, hi
+      !> The range as the user should read it, e.g. "(0, inf)" or "[0, 1/2]".
+      character(len=*), intent(in) :: range_text
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      logical, intent(in), optional :: lo_open, hi_open
+      logical :: bad
+      character(len=32) :: xtext
+
+      bad = ieee_is_nan(x)
+      if (.not. bad) then
+         if (optval(lo_open)) then
+            bad = .not. (x > lo)
+         else
+            bad = .not. (x >= lo)
+         end if
+         if (optval(hi_open)) then
+            bad = bad .or. .not. (x < hi)
+         else
+            bad = bad .or. .not. (x <= hi)
+         end if
+         if (hi > huge(hi)) bad = bad .or. .not. ieee_is_finite(x)
+      end if
+      if (bad) then
+         write (xtext, '(es12.5)') x
+         call set_error(wa_invalid_argument, name//" = "//trim(adjustl(xtext))// &
+            " is outside its valid range "//range_text, status, errmsg)
+      else
+         status = wa_ok
+      end if
+   end subroutine check_range
+
+   pure logical function optval(flag)
+      logical, intent(in), optional :: flag
+      optval = .false.
+      if (present(flag)) optval = flag
+   end function optval
+
+end module wa_validate

@@ -1,0 +1,31 @@
+!> wavyadhesion: adhesive contact of a wavy elastic surface against a flat.
+!> The umbrella module: `use wavyadhesion` gives the whole public API.
+module wavyadhesion
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
+      wa_capacity_too_small, wa_numerical_error, status_message
+   use wa_params, only: params_type, scales_type, new_params, dimensional_params, &
+      reduced_modulus
+   use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
+      model_westergaard, model_jkr, model_dw, model_md
+   use wa_kernels, only: westergaard_load, jkr_load, westergaard_pressure, &
+      westergaard_displacement, westergaard_gap
+   use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
+   use wa_md, only: md_equilibrium, md_roots
+   implicit none
+   private
+
+   public :: wp
+   public :: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
+      wa_capacity_too_small, wa_numerical_error, status_message
+   public :: params_type, scales_type, new_params, dimensional_params, reduced_modulus
+   public :: state_type, zone_inside, zone_whole_period, zone_full_contact
+   public :: model_westergaard, model_jkr, model_dw, model_md
+   public :: westergaard_load, jkr_load, westergaard_pressure, westergaard_displacement, &
+      westergaard_gap
+   public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
+   public :: md_equilibrium, md_roots
+
+   character(len=*), parameter, public :: wa_version = "0.1.0"
+
+end module wavyadhesion

@@ -1,0 +1,48 @@
+!> Test driver: `fpm test unit [suite [test]]`. Prints one line per test and a closing
+!> `N passed, N failed`; exits non-zero when anything failed.
+program tester
+   use harness, only: unittest_type, run_suite
+   use test_params, only: collect_params
+   use test_kernels, only: collect_kernels
+   use test_elliptic, only: collect_elliptic
+   use test_dw, only: collect_dw
+   use test_md, only: collect_md
+   use test_reference, only: collect_reference
+   implicit none
+   type(unittest_type), allocatable :: tests(:)
+   character(len=64) :: suite, only
+   integer :: npass, nfail
+
+   suite = ""; only = ""
+   if (command_argument_count() >= 1) call get_command_argument(1, suite)
+   if (command_argument_count() >= 2) call get_command_argument(2, only)
+   npass = 0; nfail = 0
+   if (wanted("params")) then
+      call collect_params(tests); call run_suite("params", tests, npass, nfail, only)
+   end if
+   if (wanted("kernels")) then
+      call collect_kernels(tests); call run_suite("kernels", tests, npass, nfail, only)
+   end if
+   if (wanted("elliptic")) then
+      call collect_elliptic(tests); call run_suite("elliptic", tests, npass, nfail, only)
+   end if
+   if (wanted("dw")) then
+      call collect_dw(tests); call run_suite("dw", tests, npass, nfail, only)
+   end if
+   if (wanted("md")) then
+      call collect_md(tests); call run_suite("md", tests, npass, nfail, only)
+   end if
+   if (wanted("reference")) then
+      call collect_reference(tests); call run_suite("reference", tests, npass, nfail, only)
+   end if
+   print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
+   if (nfail > 0 .or. npass == 0) error stop 1
+
+contains
+
+   logical function wanted(name)
+      character(len=*), intent(in) :: name
+      wanted = len_trim(suite) == 0 .or. trim(suite) == name
+   end function wanted
+
+end program tester
