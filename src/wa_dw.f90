@@ -18,7 +18,7 @@ module wa_dw
    implicit none
    private
 
-   public :: dw_equilibrium, dw_roots, dw_residual, dw_traction, dw_gap
+   public :: dw_equilibrium, dw_roots, dw_residual, dw_state_at, dw_traction, dw_gap
 
    !> sin(pi a*) and the differences that must not be formed by subtraction.
    type :: contact_geometry
@@ -151,6 +151,15 @@ contains
       h = (1.0_wp + lambda)*wavy_gap_shape(a, s) - lambda*wavy_gap_shape(c, s)
    end function dw_gap
 
+
+   !> The case-1 state at a* on the curve variable u = ln s (no solve): what the
+   !> continuation driver needs once its corrector has converged.
+   pure function dw_state_at(params, a_star, u) result(state)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, u
+      type(state_type) :: state
+      state = case1_state(params, geometry(a_star), exp(u))
+   end function dw_state_at
 
    ! ---------------------------------------------------------------- internals
 

@@ -1,0 +1,618 @@
+!> Pseudo-arclength continuation of the equilibrium curve P*(a*), c*(a*) of the cohesive
+!> models over 0 < a* < 1/2, through every fold, with the zone-case switches (c* reaching
+!> 1/2 and leaving it) and the folds of P* (dP*/da* = 0) located as events.
+!>
+!> The case-1 curve is the zero set of one residual F(a*, y) (y: the model's zone
+!> variable, wa_curve); it is followed in the plane z = (a*, w y) with a tangent
+!> predictor and a Newton corrector on the arclength-augmented system
+!>   F(z) = 0,  t . (z - z_pred) = 0,
+!> with steps adapted to the corrector's convergence and to the turn of the tangent.
+!> Case 2 (c* = 1/2) is explicit in a*; it holds where F(a*, y_max) < 0.
+module wa_branch
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, wa_numerical_error, &
+      set_error
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
+      model_westergaard, model_jkr, model_dw, model_md
+   use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
+      curve_case2_load, curve_start
+   use wa_kernels, only: westergaard_load, jkr_load
+   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   implicit none
+   private
+
+   public :: branch_type, trace_options, trace_branch
+   public :: event_none, event_fold, event_switch, event_jump_start, event_jump_end, &
+      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end
+
+   !> Event codes of SPEC section 7.
+   integer, parameter :: event_none = 0, event_fold = 1, event_switch = 2, &
+      event_jump_start = 3, event_jump_end = 4, event_full_contact_reached = 5, &
+      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8
+
+   !> A traced branch: points in the order of the curve (not necessarily of a*).
+   type :: branch_type
+      integer :: n = 0
+      real(wp), allocatable :: a_star(:), c_star(:), p_star(:)
+      integer, allocatable :: zone_case(:)
+      !> dP*/da* > 0 (stable under load control); false at extrema
+      logical, allocatable :: stable(:)
+      !> event code of the point (0 for ordinary points)
+      integer, allocatable :: event(:)
+      !> +1 local maximum of P* along the curve, -1 local minimum (folds and corners), 0
+      integer, allocatable :: extremum(:)
+   end type branch_type
+
+   !> Continuation controls (defaults suit every model and parameter tested).
+   type :: trace_options
+      !> Largest and smallest step, in units of a* along the scaled arclength.
+      real(wp) :: step_max = 0.004_wp, step_min = 1.0e-11_wp
+      !> The branch starts at a* = a_start (the limit a* -> 0)
+      real(wp) :: a_start = 1.0e-6_wp
+      !> Largest turn of the tangent per step [rad]
+      real(wp) :: max_turn = 0.15_wp
+      integer :: max_points = 20000
+   end type trace_options
+
+   !> A point of the curve in the scaled plane, with its derivatives.
+   type :: curve_point
+      real(wp) :: a = 0.0_wp, y = 0.0_wp
+      integer :: zone_case = zone_inside
+      !> unit tangent (da, w dy) in the direction of travel
+      real(wp) :: t(2) = 0.0_wp
+      !> dP*/dsigma along the direction of travel
+      real(wp) :: dp = 0.0_wp
+   end type curve_point
+
+   integer, parameter :: max_newton = 12
+
+contains
+
+   !> Trace the equilibrium branch of `model` for `params` from a* -> 0 to a* = 1/2.
+   subroutine trace_branch(model, params, branch, status, errmsg, options)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(out) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(trace_options), intent(in), optional :: options
+      type(trace_options) :: opts
+
+      if (present(options)) opts = options
+      call reserve(branch, 256)
+      select case (model)
+      case (model_westergaard, model_jkr)
+         call closed_form_branch(model, params, opts, branch, status)
+      case (model_dw, model_md)
+         call cohesive_branch(model, params, opts, branch, status, errmsg)
+      case default
+         call set_error(wa_invalid_argument, "model: must be one of 0 (westergaard), "// &
+            "1 (jkr), 2 (dw), 3 (md)", status, errmsg)
+      end select
+   end subroutine trace_branch
+
+   ! ------------------------------------------------------------ closed forms
+
+   !> Westergaard and JKR: P*(a*) sampled uniformly, JKR's folds located by Brent on
+   !> dP*/da* = pi sin(2 pi a*) - alpha pi/(2 sqrt(tan) cos^2)   (3.4)
+   subroutine closed_form_branch(model, params, opts, branch, status)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(trace_options), intent(in) :: opts
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      integer, parameter :: n = 200
+      real(wp) :: a_prev, a, a_end, d_prev, d, a_fold
+      integer :: i
+
+      status = wa_ok
+      a_end = 0.5_wp
+      if (model == model_jkr) a_end = 0.5_wp - 1.0e-9_wp
+      a_prev = opts%a_start
+      d_prev = closed_slope(model, params, a_prev)
+      call append_closed(model, params, a_prev, event_branch_end, 0, branch)
+      do i = 1, n
+         a = opts%a_start + (a_end - opts%a_start)*real(i, wp)/n
+         d = closed_slope(model, params, a)
+         if (d*d_prev < 0.0_wp) then
+            a_fold = closed_fold(model, params, a_prev, d_prev, a, d)
+            call append_closed(model, params, a_fold, event_fold, &
+               merge(1, -1, d_prev > 0.0_wp), branch)
+         end if
+         call append_closed(model, params, a, merge(event_branch_end, event_none, i == n), &
+            0, branch)
+         a_prev = a; d_prev = d
+      end do
+      if (model == model_westergaard) branch%zone_case(branch%n) = zone_full_contact
+   end subroutine closed_form_branch
+
+   pure function closed_slope(model, params, a) result(d)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a
+      real(wp) :: d, t, c
+      d = pi*sin(2.0_wp*pi*a)
+      if (model == model_jkr) then
+         t = tan(pi*a)
+         c = cos(pi*a)
+         d = d - params%alpha*pi/(2.0_wp*sqrt(t)*c*c)
+      end if
+   end function closed_slope
+
+   pure function closed_fold(model, params, a1, d1, a2, d2) result(a)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a1, d1, a2, d2
+      real(wp) :: a
+      type(brent_type) :: solver
+      logical :: done
+      integer :: iter
+      call brent_init(solver, a1, d1, a2, d2, 1.0e-15_wp)
+      do iter = 1, 200
+         call brent_propose(solver, a, done)
+         if (done) exit
+         call brent_accept(solver, closed_slope(model, params, a))
+      end do
+      a = solver%b
+   end function closed_fold
+
+   subroutine append_closed(model, params, a, event, extremum, branch)
+      integer, intent(in) :: model, event, extremum
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a
+      type(branch_type), intent(inout) :: branch
+      type(state_type) :: s
+      s%a_star = a
+      s%c_star = a
+      s%zone_case = zone_inside
+      if (model == model_jkr) then
+         s%p_star = jkr_load(params%alpha, a)
+      else
+         s%p_star = westergaard_load(a)
+      end if
+      call append(branch, s, closed_slope(model, params, a) > 0.0_wp .and. extremum == 0, &
+         event, extremum)
+   end subroutine append_closed
+
+   ! ------------------------------------------------------- cohesive models
+
+   subroutine cohesive_branch(model, params, opts, branch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(trace_options), intent(in) :: opts
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(curve_point) :: p
+      real(wp) :: h
+
+      call curve_start(model, params, opts%a_start, p%a, p%y, p%zone_case, status, errmsg)
+      if (status /= wa_ok) return
+      if (p%zone_case == zone_inside) call orient(model, params, p, [1.0_wp, 0.0_wp])
+      call push(model, params, p, event_branch_end, 0, branch)
+      h = opts%step_max
+      do while (branch%n < opts%max_points)
+         if (p%zone_case == zone_inside) then
+            call step_case1(model, params, opts, p, h, branch, status, errmsg)
+         else
+            call step_case2(model, params, opts, p, h, branch, status, errmsg)
+         end if
+         if (status /= wa_ok) return
+         if (branch%event(branch%n) == event_branch_end) return
+      end do
+      call set_error(wa_not_converged, "trace_branch: max_points reached before a* = 1/2", &
+         status, errmsg)
+   end subroutine cohesive_branch
+
+   !> One step along case 2 (explicit in a*): stop at the end, or locate where the
+   !> case-1 root enters (F(a*, y_max) changes sign to >= 0) and switch.
+   subroutine step_case2(model, params, opts, p, h, branch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(trace_options), intent(in) :: opts
+      type(curve_point), intent(inout) :: p
+      real(wp), intent(inout) :: h
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: a_new, dir, v_new, v_old, slope_before
+      type(curve_point) :: q
+
+      status = wa_ok
+      dir = sign(1.0_wp, p%t(1))
+      if (p%t(1) == 0.0_wp) dir = 1.0_wp
+      a_new = min(0.5_wp, max(opts%a_start, p%a + dir*opts%step_max))
+      v_new = -1.0_wp
+      if (a_new < 0.5_wp) v_new = curve_residual(model, params, a_new, curve_y_max(model))
+      if (v_new < 0.0_wp) then
+         q = case2_point(model, a_new, dir)
+         if (a_new >= 0.5_wp .or. a_new <= opts%a_start) then
+            q%zone_case = merge(zone_full_contact, zone_whole_period, a_new >= 0.5_wp)
+            call push(model, params, q, event_branch_end, 0, branch)
+         else
+            call push(model, params, q, event_none, 0, branch)
+         end if
+         p = q
+         return
+      end if
+      v_old = curve_residual(model, params, p%a, curve_y_max(model))
+      q%a = switch_abscissa(model, params, p%a, v_old, a_new, v_new, status, errmsg)
+      if (status /= wa_ok) return
+      q%y = curve_y_max(model)
+      q%zone_case = zone_inside
+      slope_before = dir*case2_slope(q%a)
+      call orient(model, params, q, [0.0_wp, -1.0_wp])     ! into c* < 1/2
+      call push(model, params, q, event_switch, corner_extremum(slope_before, q%dp), branch)
+      p = q
+      h = max(opts%step_min, 0.1_wp*opts%step_max)
+   end subroutine step_case2
+
+   !> One pseudo-arclength step on the case-1 curve, with fold location and the switch
+   !> to case 2 where the step would carry y past y_max.
+   subroutine step_case1(model, params, opts, p, h, branch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(trace_options), intent(in) :: opts
+      type(curve_point), intent(inout) :: p
+      real(wp), intent(inout) :: h
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(curve_point) :: q, f
+      integer :: iters
+      logical :: ok
+
+      status = wa_ok
+      do
+         call corrector(model, params, p, h, q, iters, ok)
+         if (ok) ok = q%a > 0.0_wp .and. q%a < 0.5_wp .and. q%y <= curve_y_max(model)
+         if (ok) then
+            call orient(model, params, q, p%t)
+            ok = dot_product(p%t, q%t) >= cos(opts%max_turn)
+         end if
+         if (ok) exit
+         if (crosses_case2(model, params, p, h)) then
+            call switch_to_case2(model, params, p, h, branch, status, errmsg)
+            return
+         end if
+         h = 0.5_wp*h
+         if (h < opts%step_min) then
+            call set_error(wa_not_converged, "trace_branch: step size underflow on the "// &
+               "case-1 curve", status, errmsg)
+            return
+         end if
+      end do
+      if (p%dp*q%dp < 0.0_wp) then
+         call locate_fold(model, params, p, h, f, status, errmsg)
+         if (status /= wa_ok) return
+         call push(model, params, f, event_fold, merge(1, -1, p%dp > 0.0_wp), branch)
+      end if
+      if (q%a <= opts%a_start .or. q%a >= 0.5_wp - 1.0e-12_wp) then
+         call push(model, params, q, event_branch_end, 0, branch)
+      else
+         call push(model, params, q, event_none, 0, branch)
+      end if
+      p = q
+      if (iters <= 2) h = min(opts%step_max, 1.5_wp*h)
+      if (iters >= 5) h = 0.5_wp*h
+   end subroutine step_case1
+
+   !> Predictor z + h t, then Newton on F = 0, t.(z - z_pred) = 0.
+   pure subroutine corrector(model, params, p, h, q, iters, ok)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: h
+      type(curve_point), intent(out) :: q
+      integer, intent(out) :: iters
+      logical, intent(out) :: ok
+      real(wp) :: w, z(2), zp(2), g(2), f, r2, det, dz(2)
+
+      w = curve_weight(model)
+      zp = [p%a, w*p%y] + h*p%t
+      z = zp
+      ok = .false.
+      do iters = 1, max_newton
+         if (z(1) <= 0.0_wp .or. z(1) >= 0.5_wp .or. z(2)/w > curve_y_max(model)) return
+         call residual_gradient(model, params, z(1), z(2)/w, f, g)
+         g(2) = g(2)/w
+         if (.not. (ieee_is_finite(f) .and. all(ieee_is_finite(g)))) return
+         r2 = dot_product(p%t, z - zp)
+         det = g(1)*p%t(2) - g(2)*p%t(1)
+         if (det == 0.0_wp) return
+         dz = [(-f*p%t(2) + r2*g(2))/det, (-g(1)*r2 + p%t(1)*f)/det]
+         z = z + dz
+         if (norm2(dz) <= 1.0e-14_wp*max(1.0_wp, norm2(z))) then
+            ok = .true.
+            exit
+         end if
+      end do
+      q%a = z(1)
+      q%y = z(2)/w
+      q%zone_case = zone_inside
+   end subroutine corrector
+
+   !> F and its forward-difference gradient (enough for Newton's direction).
+   pure subroutine residual_gradient(model, params, a, y, f, g)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a, y
+      real(wp), intent(out) :: f, g(2)
+      real(wp) :: ha, hy
+      f = curve_residual(model, params, a, y)
+      ha = 1.0e-7_wp*max(a, 1.0e-3_wp)
+      if (a + ha >= 0.5_wp) ha = -ha
+      hy = -1.0e-7_wp*max(abs(y), 1.0_wp)
+      g(1) = (curve_residual(model, params, a + ha, y) - f)/ha
+      g(2) = (curve_residual(model, params, a, y + hy) - f)/hy
+   end subroutine residual_gradient
+
+   !> Unit tangent of the case-1 curve at q, oriented along `previous`, and dP*/dsigma.
+   pure subroutine orient(model, params, q, previous)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(inout) :: q
+      real(wp), intent(in) :: previous(2)
+      real(wp) :: fa, fy, pa, py, w
+      w = curve_weight(model)
+      call accurate_partials(model, params, q%a, q%y, fa, fy, pa, py)
+      q%t = [fy/w, -fa]
+      q%t = q%t/norm2(q%t)
+      if (dot_product(q%t, previous) < 0.0_wp) q%t = -q%t
+      q%dp = pa*q%t(1) + py*(q%t(2)/w)
+   end subroutine orient
+
+   !> Five-point differences of F and P* in a* and y (one-sided where the domain ends):
+   !> error ~ h^4, accurate to ~1e-12, which places folds to ~1e-11 in a*.
+   pure subroutine accurate_partials(model, params, a, y, fa, fy, pa, py)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a, y
+      real(wp), intent(out) :: fa, fy, pa, py
+      real(wp) :: ha, hy, fv(0:4), pv(0:4), side
+      integer :: k
+
+      ha = 2.0e-3_wp*min(a, 0.5_wp - a, 0.05_wp)
+      hy = 2.0e-3_wp*max(1.0_wp, abs(y))
+      do k = 0, 4
+         call values_at(a + (k - 2)*ha, y, fv(k), pv(k))
+      end do
+      fa = central5(fv, ha)
+      pa = central5(pv, ha)
+      side = 1.0_wp
+      if (y + 2.0_wp*hy > curve_y_max(model)) side = -1.0_wp
+      do k = 0, 4
+         call values_at(a, y + side*k*hy, fv(k), pv(k))
+      end do
+      fy = side*onesided5(fv, hy)
+      py = side*onesided5(pv, hy)
+   contains
+      pure subroutine values_at(aa, yy, fval, pval)
+         real(wp), intent(in) :: aa, yy
+         real(wp), intent(out) :: fval, pval
+         type(state_type) :: s
+         fval = curve_residual(model, params, aa, yy)
+         s = curve_state(model, params, aa, yy)
+         pval = s%p_star
+      end subroutine values_at
+   end subroutine accurate_partials
+
+   pure real(wp) function central5(v, h)
+      real(wp), intent(in) :: v(0:4), h
+      central5 = (v(0) - 8.0_wp*v(1) + 8.0_wp*v(3) - v(4))/(12.0_wp*h)
+   end function central5
+
+   pure real(wp) function onesided5(v, h)
+      real(wp), intent(in) :: v(0:4), h
+      onesided5 = (-25.0_wp*v(0) + 48.0_wp*v(1) - 36.0_wp*v(2) + 16.0_wp*v(3) - 3.0_wp*v(4)) &
+         /(12.0_wp*h)
+   end function onesided5
+
+   !> Brent on dP*/dsigma over the arclength between p and the accepted step h.
+   subroutine locate_fold(model, params, p, h, f, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: h
+      type(curve_point), intent(out) :: f
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: sigma, d
+      logical :: done, ok
+      integer :: iter, iters
+
+      status = wa_ok
+      call corrector(model, params, p, h, f, iters, ok)
+      call orient(model, params, f, p%t)
+      call brent_init(solver, 0.0_wp, p%dp, h, f%dp, 1.0e-13_wp)
+      do iter = 1, 100
+         call brent_propose(solver, sigma, done)
+         if (done) exit
+         call corrector(model, params, p, sigma, f, iters, ok)
+         if (.not. ok) exit
+         call orient(model, params, f, p%t)
+         d = f%dp
+         call brent_accept(solver, d)
+      end do
+      call corrector(model, params, p, solver%b, f, iters, ok)
+      if (.not. (done .and. ok)) then
+         call set_error(wa_not_converged, "trace_branch: a fold could not be located", &
+            status, errmsg)
+         return
+      end if
+      call orient(model, params, f, p%t)
+   end subroutine locate_fold
+
+   !> Does the curve leave case 1 (reach y_max) within the next step?
+   logical function crosses_case2(model, params, p, h)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: h
+      real(wp) :: a_next
+      a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
+      crosses_case2 = p%t(2) > 0.0_wp .and. &
+         curve_residual(model, params, a_next, curve_y_max(model)) <= 0.0_wp
+   end function crosses_case2
+
+   !> Locate where the case-1 curve reaches y_max, push the switch event, go on in case 2.
+   subroutine switch_to_case2(model, params, p, h, branch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(inout) :: p
+      real(wp), intent(inout) :: h
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: a_next, v_here, v_next, dir, slope_before
+      type(curve_point) :: q
+
+      dir = sign(1.0_wp, p%t(1))
+      a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
+      v_here = curve_residual(model, params, p%a, curve_y_max(model))
+      v_next = curve_residual(model, params, a_next, curve_y_max(model))
+      q%a = switch_abscissa(model, params, p%a, v_here, a_next, v_next, status, errmsg)
+      if (status /= wa_ok) return
+      q%y = curve_y_max(model)
+      q%zone_case = zone_inside
+      call orient(model, params, q, p%t)
+      slope_before = q%dp
+      q = case2_point(model, q%a, dir)
+      call push(model, params, q, event_switch, corner_extremum(slope_before, q%dp), branch)
+      p = q
+   end subroutine switch_to_case2
+
+   !> The a* where F(a*, y_max) = 0 between a1 and a2 (case switch, to ~1e-15).
+   function switch_abscissa(model, params, a1, v1, a2, v2, status, errmsg) result(a)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a1, v1, a2, v2
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: a
+      type(brent_type) :: solver
+      logical :: done
+      integer :: iter
+      status = wa_ok
+      if (v1*v2 > 0.0_wp) then
+         a = a1
+         call set_error(wa_numerical_error, "trace_branch: case switch not bracketed", &
+            status, errmsg)
+         return
+      end if
+      call brent_init(solver, a1, v1, a2, v2, 1.0e-16_wp)
+      do iter = 1, 200
+         call brent_propose(solver, a, done)
+         if (done) exit
+         call brent_accept(solver, curve_residual(model, params, a, curve_y_max(model)))
+      end do
+      a = solver%b
+   end function switch_abscissa
+
+   !> A case-2 point at a*, travelling in direction dir of a*; P* = A^2 - const.
+   pure function case2_point(model, a, dir) result(q)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: a, dir
+      type(curve_point) :: q
+      q%a = a
+      q%y = curve_y_max(model)
+      q%zone_case = zone_whole_period
+      q%t = [dir, 0.0_wp]
+      q%dp = dir*case2_slope(a)
+   end function case2_point
+
+   !> dP*/da* in case 2: d(A^2)/da* = pi sin(2 pi a*)   (2.28a)
+   pure real(wp) function case2_slope(a)
+      real(wp), intent(in) :: a
+      case2_slope = pi*sin(2.0_wp*pi*a)
+   end function case2_slope
+
+   !> Extremum at a corner: +1 if P* rose into it and falls after, -1 the reverse.
+   pure integer function corner_extremum(before, after)
+      real(wp), intent(in) :: before, after
+      corner_extremum = 0
+      if (before > 0.0_wp .and. after < 0.0_wp) corner_extremum = 1
+      if (before < 0.0_wp .and. after > 0.0_wp) corner_extremum = -1
+   end function corner_extremum
+
+   ! ------------------------------------------------------------ storage
+
+   subroutine push(model, params, q, event, extremum, branch)
+      integer, intent(in) :: model, event, extremum
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: q
+      type(branch_type), intent(inout) :: branch
+      type(state_type) :: s
+      if (q%zone_case == zone_inside) then
+         s = curve_state(model, params, q%a, q%y)
+      else
+         s%a_star = q%a
+         s%c_star = 0.5_wp
+         s%gap_width = 0.5_wp - q%a
+         s%p_star = curve_case2_load(model, params, q%a)
+         s%zone_case = q%zone_case
+      end if
+      call append(branch, s, q%dp*sign(1.0_wp, q%t(1)) > 0.0_wp .and. extremum == 0 &
+         .and. q%t(1) /= 0.0_wp, event, extremum)
+   end subroutine push
+
+   subroutine append(branch, s, stable, event, extremum)
+      type(branch_type), intent(inout) :: branch
+      type(state_type), intent(in) :: s
+      logical, intent(in) :: stable
+      integer, intent(in) :: event, extremum
+      if (branch%n == size(branch%a_star)) call reserve(branch, 2*branch%n)
+      branch%n = branch%n + 1
+      branch%a_star(branch%n) = s%a_star
+      branch%c_star(branch%n) = s%c_star
+      branch%p_star(branch%n) = s%p_star
+      branch%zone_case(branch%n) = s%zone_case
+      branch%stable(branch%n) = stable
+      branch%event(branch%n) = event
+      branch%extremum(branch%n) = extremum
+   end subroutine append
+
+   subroutine reserve(branch, capacity)
+      type(branch_type), intent(inout) :: branch
+      integer, intent(in) :: capacity
+      if (.not. allocated(branch%a_star)) branch%n = 0
+      call grow_real(branch%a_star, branch%n, capacity)
+      call grow_real(branch%c_star, branch%n, capacity)
+      call grow_real(branch%p_star, branch%n, capacity)
+      call grow_int(branch%zone_case, branch%n, capacity)
+      call grow_int(branch%event, branch%n, capacity)
+      call grow_int(branch%extremum, branch%n, capacity)
+      call grow_logical(branch%stable, branch%n, capacity)
+   end subroutine reserve
+
+   pure subroutine grow_real(x, n, capacity)
+      real(wp), allocatable, intent(inout) :: x(:)
+      integer, intent(in) :: n, capacity
+      real(wp), allocatable :: tmp(:)
+      allocate (tmp(capacity))
+      if (n > 0) tmp(1:n) = x(1:n)
+      call move_alloc(tmp, x)
+   end subroutine grow_real
+
+   pure subroutine grow_int(x, n, capacity)
+      integer, allocatable, intent(inout) :: x(:)
+      integer, intent(in) :: n, capacity
+      integer, allocatable :: tmp(:)
+      allocate (tmp(capacity))
+      if (n > 0) tmp(1:n) = x(1:n)
+      call move_alloc(tmp, x)
+   end subroutine grow_int
+
+   pure subroutine grow_logical(x, n, capacity)
+      logical, allocatable, intent(inout) :: x(:)
+      integer, intent(in) :: n, capacity
+      logical, allocatable :: tmp(:)
+      allocate (tmp(capacity))
+      if (n > 0) tmp(1:n) = x(1:n)
+      call move_alloc(tmp, x)
+   end subroutine grow_logical
+
+end module wa_branch

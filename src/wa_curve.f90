@@ -1,0 +1,124 @@
+!> The case-1 equilibrium curve of each cohesive model as the zero set of one residual
+!> F(a*, y) in the model's zone variable y, for the continuation driver (wa_branch).
+!>   DW: y = ln((C - A)/(1 - A)), y_max = 0 (c* = 1/2), F = dw_residual   (2.25b)
+!> Case 2 (c* = 1/2) holds where F(a*, y_max) < 0; its load is A^2 - Sigma0/2 (DW).
+module wa_curve
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok, wa_invalid_argument, set_error
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, model_dw, model_md
+   use wa_dw, only: dw_equilibrium, dw_residual, dw_state_at
+   implicit none
+   private
+
+   public :: curve_residual, curve_state, curve_y_max, curve_weight, curve_case2_load
+   public :: curve_start, curve_equilibrium
+
+contains
+
+   !> F(a*, y): negative below the case-1 root in y, zero on the curve.
+   pure function curve_residual(model, params, a_star, y) result(f)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, y
+      real(wp) :: f
+      select case (model)
+      case (model_dw)
+         f = dw_residual(params, a_star, y)
+      case default
+         f = ieee_value(f, ieee_quiet_nan)
+      end select
+   end function curve_residual
+
+   !> The case-1 state (c*, P*) at (a*, y).
+   pure function curve_state(model, params, a_star, y) result(state)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, y
+      type(state_type) :: state
+      select case (model)
+      case (model_dw)
+         state = dw_state_at(params, a_star, y)
+      case default
+         state%p_star = ieee_value(state%p_star, ieee_quiet_nan)
+      end select
+   end function curve_state
+
+   !> y where c* = 1/2.
+   pure real(wp) function curve_y_max(model)
+      integer, intent(in) :: model
+      curve_y_max = 0.0_wp
+      if (model == model_md) curve_y_max = 0.0_wp
+   end function curve_y_max
+
+   !> Scale of y in the arclength, so that a* and w y vary alike along the curve.
+   pure real(wp) function curve_weight(model)
+      integer, intent(in) :: model
+      curve_weight = 0.02_wp
+      if (model == model_md) curve_weight = 0.02_wp
+   end function curve_weight
+
+   !> Case-2 load: DW A^2 - Sigma0/2 (2.28a); MD A^2 - Sigma0 (extension, doc/theory.md).
+   pure real(wp) function curve_case2_load(model, params, a_star)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      curve_case2_load = sin(pi*a_star)**2 - 0.5_wp*params%sigma0
+      if (model == model_md) curve_case2_load = sin(pi*a_star)**2 - params%sigma0
+   end function curve_case2_load
+
+   !> The principal state at a_start as a curve point (a*, y, zone case).
+   pure subroutine curve_start(model, params, a_start, a, y, zone_case, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_start
+      real(wp), intent(out) :: a, y
+      integer, intent(out) :: zone_case
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: s
+      a = a_start
+      y = curve_y_max(model)
+      zone_case = 0
+      select case (model)
+      case (model_dw)
+         call dw_equilibrium(params, a_start, s, status, errmsg)
+      case default
+         call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
+      end select
+      if (status /= wa_ok) return
+      zone_case = s%zone_case
+      if (zone_case == zone_inside) y = zone_variable(model, s)
+   end subroutine curve_start
+
+   !> The equilibrium at a* on the branch through c_hint (DW has one; MD may have two
+   !> case-1 states and takes the one nearest c_hint).
+   pure subroutine curve_equilibrium(model, params, a_star, c_hint, state, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, c_hint
+      type(state_type), intent(out) :: state
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      select case (model)
+      case (model_dw)
+         call dw_equilibrium(params, a_star, state, status, errmsg)
+      case default
+         state%c_star = c_hint
+         call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
+      end select
+   end subroutine curve_equilibrium
+
+   !> y of a case-1 state; C - A = 2 cos(pi (a*+c*)/2) sin(pi (c*-a*)/2) avoids cancellation.
+   pure real(wp) function zone_variable(model, s)
+      integer, intent(in) :: model
+      type(state_type), intent(in) :: s
+      real(wp) :: c_minus_a, one_minus_a
+      c_minus_a = 2.0_wp*cos(0.5_wp*pi*(s%a_star + s%c_star))*sin(0.5_wp*pi*s%gap_width)
+      one_minus_a = 2.0_wp*sin(0.5_wp*pi*(0.5_wp - s%a_star))**2
+      zone_variable = log(c_minus_a/one_minus_a)
+      if (model == model_md) zone_variable = log(c_minus_a/one_minus_a)
+   end function zone_variable
+
+end module wa_curve

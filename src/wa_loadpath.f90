@@ -1,0 +1,333 @@
+!> Load-controlled loading and unloading along a traced branch, and the critical forces
+!> P_fc* (full contact reached) and P_pf* (pull-off), exactly as MODEL-NOTES.md defines
+!> them. Between consecutive extrema of P* the branch is monotone, so a jump at constant
+!> load lands on the nearest stable piece that spans that load; the landing point is
+!> then solved to full precision.
+module wa_loadpath
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok, set_error, wa_numerical_error
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
+      model_westergaard, model_jkr, model_dw, model_md
+   use wa_branch, only: branch_type, trace_branch, event_jump_start, event_jump_end, &
+      event_full_contact_reached, event_full_contact_left, event_pull_off
+   use wa_curve, only: curve_equilibrium
+   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   implicit none
+   private
+
+   public :: path_type, load_path, critical_forces, path_from_branch
+   public :: stage_loading, stage_unloading
+
+   integer, parameter :: stage_loading = 1, stage_unloading = 2
+
+   !> The events of one loading-unloading cycle, in order.
+   type :: path_type
+      integer :: n = 0
+      integer :: stage(64) = 0, event(64) = 0
+      real(wp) :: a_star(64) = 0.0_wp, c_star(64) = 0.0_wp, p_star(64) = 0.0_wp
+      !> Load at which full contact is first reached, and pull-off load (-Infinity: never)
+      real(wp) :: p_fc = 0.0_wp, p_pf = 0.0_wp
+      !> True where full contact is reached by a jump / contact is lost by a jump
+      logical :: fc_by_jump = .false., pf_by_jump = .false.
+      !> Zone case of the state the pull-off jump leaves from (0: gradual)
+      integer :: pf_zone_case = 0
+      !> Area of the P*-a* hysteresis loop (not an energy: see MODEL-NOTES.md)
+      real(wp) :: loop_area = 0.0_wp
+   end type path_type
+
+   !> Vertices of the hysteresis loop in the (a*, P*) plane.
+   type :: polyline
+      integer :: n = 0
+      real(wp), allocatable :: xy(:, :)
+   end type polyline
+
+contains
+
+   !> Trace the branch, then follow loading and unloading on it.
+   subroutine load_path(model, params, path, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(path_type), intent(out) :: path
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type) :: branch
+      call trace_branch(model, params, branch, status, errmsg)
+      if (status /= wa_ok) return
+      call path_from_branch(model, params, branch, path, status, errmsg)
+   end subroutine load_path
+
+   !> P_fc* and P_pf* only (the loop area is not computed).
+   subroutine critical_forces(model, params, p_fc, p_pf, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(out) :: p_fc, p_pf
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(path_type) :: path
+      call load_path(model, params, path, status, errmsg)
+      p_fc = path%p_fc
+      p_pf = path%p_pf
+   end subroutine critical_forces
+
+   !> Loading from separation at P* = 0, then unloading from full contact.
+   subroutine path_from_branch(model, params, branch, path, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(path_type), intent(out) :: path
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(polyline) :: loop
+      call loading(model, params, branch, path, loop, status, errmsg)
+      if (status /= wa_ok) return
+      call unloading(model, params, branch, path, loop, status, errmsg)
+      if (status /= wa_ok) return
+      path%loop_area = enclosed_area(loop)
+   end subroutine path_from_branch
+
+   !> Jump in at P* = 0, rise along stable pieces, jump at every maximum, until full contact.
+   subroutine loading(model, params, branch, path, loop, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(path_type), intent(inout) :: path
+      type(polyline), intent(inout) :: loop
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: s
+      integer :: k, seg
+      real(wp) :: load
+
+      status = wa_ok
+      call add(path, stage_loading, event_jump_start, 0.0_wp, 0.0_wp, 0.0_wp)
+      call vertex(loop, 0.0_wp, 0.0_wp)
+      seg = landing_segment(branch, 0.0_wp, 0.0_wp, +1)
+      load = 0.0_wp
+      do
+         if (seg == 0) then                          ! nothing stable ahead: snap to full contact
+            call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, load)
+            call vertex(loop, 0.5_wp, load)
+            path%p_fc = load
+            path%fc_by_jump = .true.
+            return
+         end if
+         call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
+         if (status /= wa_ok) return
+         call add(path, stage_loading, event_jump_end, s%a_star, s%c_star, load)
+         call vertex(loop, s%a_star, load)
+         k = next_maximum(branch, seg + 1)           ! rise until a maximum or the end
+         call follow(loop, branch, seg + 1, merge(k, branch%n, k > 0))
+         if (k == 0) then
+            path%p_fc = branch%p_star(branch%n)
+            call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, path%p_fc)
+            return
+         end if
+         load = branch%p_star(k)
+         call add(path, stage_loading, event_jump_start, branch%a_star(k), branch%c_star(k), load)
+         seg = landing_segment(branch, branch%a_star(k), load, +1)
+      end do
+   end subroutine loading
+
+   !> Leave full contact at P*(a* -> 1/2), fall along stable pieces, jump at every
+   !> minimum, until contact is lost at a fold or as a* shrinks to zero.
+   subroutine unloading(model, params, branch, path, loop, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(path_type), intent(inout) :: path
+      type(polyline), intent(inout) :: loop
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: s
+      integer :: k, seg
+      real(wp) :: load
+      logical :: at_minimum
+
+      status = wa_ok
+      if (model == model_jkr) then                    ! full contact never releases (3.4)
+         path%p_pf = ieee_value(path%p_pf, ieee_negative_inf)
+         call add(path, stage_unloading, event_pull_off, 0.5_wp, 0.5_wp, path%p_pf)
+         return
+      end if
+      k = branch%n
+      load = branch%p_star(k)
+      call add(path, stage_unloading, event_full_contact_left, 0.5_wp, 0.5_wp, load)
+      call vertex(loop, 0.5_wp, load)
+      at_minimum = .not. rising(branch, k - 1)       ! the end itself may be a minimum
+      do
+         if (.not. at_minimum) then                  ! fall along the stable piece
+            seg = previous_minimum(branch, k)
+            call follow(loop, branch, k, max(seg, 1))
+            if (seg == 0) then                       ! shrinks gradually to a* -> 0
+               path%p_pf = branch%p_star(1)
+               call add(path, stage_unloading, event_pull_off, branch%a_star(1), &
+                  branch%c_star(1), path%p_pf)
+               call vertex(loop, 0.0_wp, path%p_pf)
+               return
+            end if
+            k = seg
+            load = branch%p_star(k)
+         end if
+         call add(path, stage_unloading, event_jump_start, branch%a_star(k), &
+            branch%c_star(k), load)
+         seg = landing_segment(branch, branch%a_star(k), load, -1)
+         if (seg == 0) then                          ! nothing stable below: pull-off
+            path%p_pf = load
+            path%pf_by_jump = .true.
+            path%pf_zone_case = branch%zone_case(k)
+            call add(path, stage_unloading, event_pull_off, branch%a_star(k), &
+               branch%c_star(k), load)
+            call vertex(loop, 0.0_wp, load)
+            return
+         end if
+         call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
+         if (status /= wa_ok) return
+         call add(path, stage_unloading, event_jump_end, s%a_star, s%c_star, load)
+         call vertex(loop, s%a_star, load)
+         k = seg
+         at_minimum = .false.
+      end do
+   end subroutine unloading
+
+   !> First local maximum at or after point k (0 if the curve rises to its end).
+   pure integer function next_maximum(branch, k)
+      type(branch_type), intent(in) :: branch
+      integer, intent(in) :: k
+      integer :: i
+      next_maximum = 0
+      do i = k, branch%n
+         if (branch%extremum(i) == 1) then
+            next_maximum = i
+            return
+         end if
+      end do
+   end function next_maximum
+
+   !> Walking back from point k (on a stable piece), the first local minimum (0: none,
+   !> the piece falls to the start of the branch).
+   pure integer function previous_minimum(branch, k)
+      type(branch_type), intent(in) :: branch
+      integer, intent(in) :: k
+      integer :: i
+      previous_minimum = 0
+      do i = k, 1, -1
+         if (branch%extremum(i) == -1) then
+            previous_minimum = i
+            return
+         end if
+      end do
+   end function previous_minimum
+
+   !> The segment [i, i+1] of a rising (stable) piece that spans `load`, nearest to
+   !> a_from in direction dir (+1: larger a*, -1: smaller a*); 0 if none.
+   pure integer function landing_segment(branch, a_from, load, dir)
+      type(branch_type), intent(in) :: branch
+      real(wp), intent(in) :: a_from, load
+      integer, intent(in) :: dir
+      real(wp) :: best, a_mid
+      integer :: i
+      landing_segment = 0
+      best = huge(1.0_wp)
+      do i = 1, branch%n - 1
+         if (.not. rising(branch, i)) cycle
+         if (.not. (branch%p_star(i) <= load .and. load <= branch%p_star(i + 1))) cycle
+         a_mid = 0.5_wp*(branch%a_star(i) + branch%a_star(i + 1))
+         if (dir*(a_mid - a_from) <= 0.0_wp) cycle
+         if (abs(a_mid - a_from) < best) then
+            best = abs(a_mid - a_from)
+            landing_segment = i
+         end if
+      end do
+   end function landing_segment
+
+   !> Segment [i, i+1] is on a stable piece: P* and a* increase together.
+   pure logical function rising(branch, i)
+      type(branch_type), intent(in) :: branch
+      integer, intent(in) :: i
+      rising = (branch%p_star(i + 1) - branch%p_star(i))*(branch%a_star(i + 1) - &
+         branch%a_star(i)) > 0.0_wp
+   end function rising
+
+   !> The equilibrium on segment [seg, seg+1] whose load is `load` (Brent in a*).
+   subroutine solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
+      integer, intent(in) :: model, seg
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      real(wp), intent(in) :: load
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: a
+      logical :: done
+      integer :: iter
+
+      status = wa_ok
+      call brent_init(solver, branch%a_star(seg), branch%p_star(seg) - load, &
+         branch%a_star(seg + 1), branch%p_star(seg + 1) - load, 1.0e-15_wp)
+      do iter = 1, 200
+         call brent_propose(solver, a, done)
+         if (done) exit
+         call curve_equilibrium(model, params, a, branch%c_star(seg), s, status, errmsg)
+         if (status /= wa_ok) return
+         call brent_accept(solver, s%p_star - load)
+      end do
+      call curve_equilibrium(model, params, solver%b, branch%c_star(seg), s, status, errmsg)
+      if (status == wa_ok .and. .not. done) call set_error(wa_numerical_error, &
+         "load_path: landing point not converged", status, errmsg)
+   end subroutine solve_on_segment
+
+   subroutine add(path, stage, event, a, c, p)
+      type(path_type), intent(inout) :: path
+      integer, intent(in) :: stage, event
+      real(wp), intent(in) :: a, c, p
+      if (path%n == size(path%stage)) return
+      path%n = path%n + 1
+      path%stage(path%n) = stage
+      path%event(path%n) = event
+      path%a_star(path%n) = a
+      path%c_star(path%n) = c
+      path%p_star(path%n) = p
+   end subroutine add
+
+   !> Branch points i1..i2 (either order) appended to the loop polygon.
+   pure subroutine follow(loop, branch, i1, i2)
+      type(polyline), intent(inout) :: loop
+      type(branch_type), intent(in) :: branch
+      integer, intent(in) :: i1, i2
+      integer :: i
+      do i = i1, i2, merge(1, -1, i2 >= i1)
+         call vertex(loop, branch%a_star(i), branch%p_star(i))
+      end do
+   end subroutine follow
+
+   pure subroutine vertex(loop, a, p)
+      type(polyline), intent(inout) :: loop
+      real(wp), intent(in) :: a, p
+      real(wp), allocatable :: tmp(:, :)
+      if (.not. allocated(loop%xy)) allocate (loop%xy(2, 256))
+      if (loop%n == size(loop%xy, 2)) then
+         allocate (tmp(2, 2*loop%n))
+         tmp(:, 1:loop%n) = loop%xy(:, 1:loop%n)
+         call move_alloc(tmp, loop%xy)
+      end if
+      loop%n = loop%n + 1
+      loop%xy(:, loop%n) = [a, p]
+   end subroutine vertex
+
+   !> Shoelace area of the closed loading-unloading polygon in the (a*, P*) plane.
+   !> Trapezoidal along the branch points: relative accuracy ~ (step)^2, about 1e-4.
+   pure real(wp) function enclosed_area(loop)
+      type(polyline), intent(in) :: loop
+      integer :: i, j
+      enclosed_area = 0.0_wp
+      do i = 1, loop%n
+         j = merge(1, i + 1, i == loop%n)
+         enclosed_area = enclosed_area + loop%xy(1, i)*loop%xy(2, j) - loop%xy(1, j)*loop%xy(2, i)
+      end do
+      enclosed_area = 0.5_wp*abs(enclosed_area)
+   end function enclosed_area
+
+end module wa_loadpath
