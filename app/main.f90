@@ -23,7 +23,7 @@ program wavyadhesion_cli
       write (output_unit, '(a)') "wavyadhesion "//wa_version
       stop
    end if
-   call resolve_params(opts, params)
+   if (opts%command /= "critical") call resolve_params(opts, params)
    unit = output_unit
    if (len(opts%output) > 0) then
       open (newunit=unit, file=opts%output, status="replace", action="write", iostat=ios)
@@ -35,6 +35,10 @@ program wavyadhesion_cli
       call run_point(opts, params, unit)
    case ("branch")
       call run_branch(opts, params, unit)
+   case ("path")
+      call run_path(opts, params, unit)
+   case ("critical")
+      call run_critical(opts, unit)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
@@ -136,35 +140,143 @@ contains
       states = buffer(1:n)
    end function states_at
 
-   !> branch: the principal equilibrium curve sampled on a uniform a* grid. (Pseudo-
-   !> arclength continuation with located folds replaces this sampling in a later version.)
+   !> branch: the equilibrium curve by continuation, with its events.
    subroutine run_branch(opts, params, unit)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
       integer, intent(in) :: unit
-      integer, parameter :: n = 200
-      type(state_type) :: s(n)
-      real(wp) :: a(n), slope
-      integer :: i, event
+      type(branch_type) :: b
+      character(len=256) :: msg
+      integer :: i, status
 
       if (allocated(opts%a_star)) call usage_error("branch takes no --a-star")
-      a = [(0.5_wp*real(i, wp)/real(n + 1, wp), i=1, n)]
-      do i = 1, n
-         s(i) = principal(opts%model, params, a(i))
-      end do
-      call write_header(unit, opts%format, "equilibrium branch (sampled on a uniform a* grid)", &
+      msg = ""
+      call trace_branch(opts%model, params, b, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(unit, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
          model_name(opts%model), params, "a_star c_star P_star b_star zone_case stable event", &
          [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: dP*/da* > 0 (load control)", &
-         "event: 0 none, 1 fold, 2 zone-case switch, 3 jump start, 4 jump end,", &
-         "       5 full contact reached, 6 full contact left, 7 pull-off, 8 branch end"])
-      do i = 1, n
-         slope = (s(min(i + 1, n))%p_star - s(max(i - 1, 1))%p_star)
-         event = merge(8, 0, i == 1 .or. i == n)
-         call write_row(unit, opts%format, [s(i)%a_star, s(i)%c_star, s(i)%p_star, &
-            s(i)%a_star + 0.4_wp*(s(i)%c_star - s(i)%a_star)], &
-            [s(i)%zone_case, merge(1, 0, slope > 0.0_wp), event])
+         event_legend(1), event_legend(2)])
+      do i = 1, b%n
+         call write_row(unit, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
+            b%a_star(i) + 0.4_wp*(b%c_star(i) - b%a_star(i))], &
+            [b%zone_case(i), merge(1, 0, b%stable(i)), b%event(i)])
       end do
    end subroutine run_branch
+
+   !> path: the events of loading (stage 1) and unloading (stage 2).
+   subroutine run_path(opts, params, unit)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      integer, intent(in) :: unit
+      type(path_type) :: path
+      character(len=256) :: msg
+      integer :: i, status
+
+      msg = ""
+      call load_path(opts%model, params, path, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(unit, opts%format, "load-controlled loading and unloading", &
+         model_name(opts%model), params, "stage event a_star c_star P_star", &
+         [character(len=80) :: "stage: 1 loading, 2 unloading", event_legend(1), &
+         event_legend(2), "P_fc = "//format_real(path%p_fc)//"  P_pf = "// &
+         format_real(path%p_pf), "P-a hysteresis loop area = "//format_real(path%loop_area)])
+      do i = 1, path%n
+         call write_row_ints_first(unit, opts%format, [path%stage(i), path%event(i)], &
+            [path%a_star(i), path%c_star(i), path%p_star(i)])
+      end do
+   end subroutine run_path
+
+   !> critical: P_fc and P_pf over alpha x mu.
+   subroutine run_critical(opts, unit)
+      type(cli_options), intent(in) :: opts
+      integer, intent(in) :: unit
+      real(wp), allocatable :: alpha(:), mu(:), p_fc(:, :), p_pf(:, :)
+      integer, allocatable :: fc_mech(:, :), pf_mech(:, :)
+      character(len=256) :: msg
+      integer :: i, j, status
+      real(wp) :: t0, t1
+      logical :: progress
+
+      alpha = [0.3_wp]
+      mu = [1.0_wp]
+      if (allocated(opts%alpha)) alpha = opts%alpha
+      if (allocated(opts%mu)) mu = opts%mu
+      allocate (p_fc(size(mu), size(alpha)), p_pf(size(mu), size(alpha)), &
+         fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)))
+      call cpu_time(t0)
+      progress = .false.
+      msg = ""
+      do j = 1, size(alpha)
+         call critical_sweep(opts%model, alpha(j), mu, p_fc(:, j), p_pf(:, j), fc_mech(:, j), &
+            pf_mech(:, j), status, msg)
+         if (status == wa_invalid_argument) call usage_error("--"//trim(msg))
+         if (status /= wa_ok) call numerical_error(status, msg)
+         call cpu_time(t1)
+         if (t1 - t0 > 1.0_wp .and. isatty(error_unit)) progress = .true.
+         if (progress) write (error_unit, '(a,i0,a,i0)') "critical: alpha ", j, " of ", size(alpha)
+      end do
+      call write_header(unit, opts%format, "critical forces (full contact, pull-off)", &
+         model_name(opts%model), columns="alpha mu P_fc P_pf", notes=[character(len=120) :: &
+         "P_fc: load at which full contact is first reached (loading from P* = 0)", &
+         "P_pf: pull-off load on unloading from full contact (-Infinity: never)", &
+         mechanism_notes(opts, alpha, mu, fc_mech, pf_mech)])
+      do j = 1, size(alpha)
+         do i = 1, size(mu)
+            call write_row(unit, opts%format, [alpha(j), mu(i), p_fc(i, j), p_pf(i, j)])
+         end do
+      end do
+   end subroutine run_critical
+
+   !> Header lines locating in mu each change of mechanism (table format only).
+   function mechanism_notes(opts, alpha, mu, fc_mech, pf_mech) result(notes)
+      type(cli_options), intent(in) :: opts
+      real(wp), intent(in) :: alpha(:), mu(:)
+      integer, intent(in) :: fc_mech(:, :), pf_mech(:, :)
+      character(len=120), allocatable :: notes(:)
+      character(len=*), parameter :: names(0:3) = [character(len=12) :: "gradual", &
+         "jump case 1", "jump case 2", "snap at P=0"]
+      character(len=256) :: msg
+      real(wp) :: mu_c
+      integer :: i, j, which, status, m(2)
+      allocate (notes(0))
+      if (opts%format == "csv") return
+      do j = 1, size(alpha)
+         do i = 1, size(mu) - 1
+            do which = 1, 2
+               if (which == 1) m = fc_mech(i:i + 1, j)
+               if (which == 2) m = pf_mech(i:i + 1, j)
+               if (m(1) == m(2)) cycle
+               call mechanism_change(opts%model, alpha(j), which, mu(i), mu(i + 1), mu_c, status, msg)
+               if (status /= wa_ok) call numerical_error(status, msg)
+               notes = [notes, "alpha "//format_real(alpha(j))//" mu "//format_real(mu_c)// &
+                  merge(" P_fc: ", " P_pf: ", which == 1)//trim(names(m(1)))//" -> "// &
+                  trim(names(m(2)))]
+            end do
+         end do
+      end do
+   end function mechanism_notes
+
+   function event_legend(line) result(text)
+      integer, intent(in) :: line
+      character(len=80) :: text
+      if (line == 1) then
+         text = "event: 0 none, 1 fold, 2 zone-case switch, 3 jump start, 4 jump end,"
+      else
+         text = "       5 full contact reached, 6 full contact left, 7 pull-off, 8 branch end"
+      end if
+   end function event_legend
+
+   subroutine write_row_ints_first(unit, format, ints, reals)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: format
+      integer, intent(in) :: ints(:)
+      real(wp), intent(in) :: reals(:)
+      character(len=1) :: sep
+      sep = merge(",", " ", format == "csv")
+      write (unit, '(i0,a,i0,a)', advance="no") ints(1), sep, ints(2), sep
+      call write_row(unit, format, reals)
+   end subroutine write_row_ints_first
 
    function principal(model, params, a_star) result(state)
       integer, intent(in) :: model
@@ -212,8 +324,12 @@ contains
          "p* = pi E* Delta/L; widths a* = a/L, c* = c/L.", &
          "", &
          "Subcommands:", &
-         "  branch    the equilibrium curve P*(a*), c*(a*) (default; alpha=0.3, mu=1, dw)", &
+         "  branch    the equilibrium curve P*(a*), c*(a*) with folds and case switches", &
+         "            (default; alpha=0.3, mu=1, dw)", &
          "  point     every equilibrium at given a*: --a-star X[,X...]", &
+         "  path      loading and unloading under load control: jumps, full contact, pull-off", &
+         "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
+         "            --mu-range LO:HI:N[:log]", &
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &

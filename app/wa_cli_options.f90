@@ -79,6 +79,7 @@ contains
       case ("--alpha"); call parse_real_list(val, "--alpha", opts%alpha, error)
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
+      case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
       case ("--format")
          if (val /= "table" .and. val /= "csv") then
             error = "--format: '"//val//"' is not one of table, csv"
@@ -121,6 +122,53 @@ contains
          start = start + comma
       end do
    end subroutine parse_real_list
+
+   !> LO:HI:N[:log] -> N values of mu from LO to HI, linear or log-spaced.
+   subroutine parse_mu_range(text, values, error)
+      character(len=*), intent(in) :: text
+      real(wp), allocatable, intent(out) :: values(:)
+      character(len=:), allocatable, intent(out) :: error
+      character(len=:), allocatable :: spec
+      real(wp), allocatable :: parts(:)
+      logical :: logscale
+      integer :: n, i
+      spec = text
+      logscale = .false.
+      if (len(spec) > 4) then
+         if (spec(len(spec) - 3:) == ":log") then
+            logscale = .true.
+            spec = spec(:len(spec) - 4)
+         end if
+      end if
+      do i = 1, len(spec)
+         if (spec(i:i) == ":") spec(i:i) = ","
+      end do
+      call parse_real_list(spec, "--mu-range", parts, error)
+      if (allocated(error)) return
+      if (size(parts) /= 3) then
+         error = "--mu-range: expected LO:HI:N[:log], got '"//text//"'"
+         return
+      end if
+      n = nint(parts(3))
+      if (n < 1 .or. abs(parts(3) - n) > 0 .or. n > max_values) then
+         error = "--mu-range: N must be an integer in [1, 100000]"
+      else if (.not. (parts(1) >= 0.0_wp .and. parts(2) >= parts(1))) then
+         error = "--mu-range: need 0 <= LO <= HI"
+      else if (logscale .and. parts(1) <= 0.0_wp) then
+         error = "--mu-range: LO must be > 0 with :log"
+      end if
+      if (allocated(error)) return
+      allocate (values(n))
+      values(1) = parts(1)
+      do i = 2, n
+         if (logscale) then
+            values(i) = parts(1)*(parts(2)/parts(1))**(real(i - 1, wp)/real(n - 1, wp))
+         else
+            values(i) = parts(1) + (parts(2) - parts(1))*real(i - 1, wp)/real(n - 1, wp)
+         end if
+      end do
+      if (n > 1) values(n) = parts(2)
+   end subroutine parse_mu_range
 
    subroutine parse_real(text, name, x, error)
       character(len=*), intent(in) :: text, name

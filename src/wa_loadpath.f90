@@ -7,7 +7,7 @@ module wa_loadpath
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, set_error, wa_numerical_error
-   use wa_params, only: params_type
+   use wa_params, only: params_type, new_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_branch, only: branch_type, trace_branch, event_jump_start, event_jump_end, &
@@ -18,9 +18,14 @@ module wa_loadpath
    private
 
    public :: path_type, load_path, critical_forces, path_from_branch
-   public :: stage_loading, stage_unloading
+   public :: stage_loading, stage_unloading, critical_sweep, mechanism_change
+   public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
+   !> Mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
+   !> (full contact only) a snap from separation at zero load.
+   integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
+      mechanism_jump_case2 = 2, mechanism_snap = 3
 
    !> The events of one loading-unloading cycle, in order.
    type :: path_type
@@ -31,8 +36,8 @@ module wa_loadpath
       real(wp) :: p_fc = 0.0_wp, p_pf = 0.0_wp
       !> True where full contact is reached by a jump / contact is lost by a jump
       logical :: fc_by_jump = .false., pf_by_jump = .false.
-      !> Zone case of the state the pull-off jump leaves from (0: gradual)
-      integer :: pf_zone_case = 0
+      !> How full contact is reached / contact is lost (mechanism_* codes)
+      integer :: fc_mechanism = 0, pf_mechanism = 0
       !> Area of the P*-a* hysteresis loop (not an energy: see MODEL-NOTES.md)
       real(wp) :: loop_area = 0.0_wp
    end type path_type
@@ -105,6 +110,7 @@ contains
       call vertex(loop, 0.0_wp, 0.0_wp)
       seg = landing_segment(branch, 0.0_wp, 0.0_wp, +1)
       load = 0.0_wp
+      path%fc_mechanism = mechanism_snap
       do
          if (seg == 0) then                          ! nothing stable ahead: snap to full contact
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, load)
@@ -113,18 +119,25 @@ contains
             path%fc_by_jump = .true.
             return
          end if
-         call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
-         if (status /= wa_ok) return
+         if (seg == 1 .and. branch%p_star(1) >= load) then   ! in contact from a* -> 0 on
+            s%a_star = branch%a_star(1)
+            s%c_star = branch%c_star(1)
+         else
+            call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
+            if (status /= wa_ok) return
+         end if
          call add(path, stage_loading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
          k = next_maximum(branch, seg + 1)           ! rise until a maximum or the end
          call follow(loop, branch, seg + 1, merge(k, branch%n, k > 0))
          if (k == 0) then
             path%p_fc = branch%p_star(branch%n)
+            path%fc_mechanism = mechanism_gradual
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, path%p_fc)
             return
          end if
          load = branch%p_star(k)
+         path%fc_mechanism = jump_from(branch%zone_case(k))
          call add(path, stage_loading, event_jump_start, branch%a_star(k), branch%c_star(k), load)
          seg = landing_segment(branch, branch%a_star(k), load, +1)
       end do
@@ -176,7 +189,7 @@ contains
          if (seg == 0) then                          ! nothing stable below: pull-off
             path%p_pf = load
             path%pf_by_jump = .true.
-            path%pf_zone_case = branch%zone_case(k)
+            path%pf_mechanism = jump_from(branch%zone_case(k))
             call add(path, stage_unloading, event_pull_off, branch%a_star(k), &
                branch%c_star(k), load)
             call vertex(loop, 0.0_wp, load)
@@ -190,6 +203,73 @@ contains
          at_minimum = .false.
       end do
    end subroutine unloading
+
+   pure integer function jump_from(zone_case)
+      integer, intent(in) :: zone_case
+      jump_from = merge(mechanism_jump_case1, mechanism_jump_case2, zone_case == zone_inside)
+   end function jump_from
+
+   !> P_fc*, P_pf* and their mechanisms for one alpha over many mu.
+   subroutine critical_sweep(model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_mechanism, &
+         status, errmsg)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha, mu(:)
+      real(wp), intent(out) :: p_fc(:), p_pf(:)
+      integer, intent(out) :: fc_mechanism(:), pf_mechanism(:)
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(params_type) :: params
+      type(path_type) :: path
+      integer :: i
+      do i = 1, size(mu)
+         call new_params(alpha, mu(i), params, status, errmsg)
+         if (status /= wa_ok) return
+         call load_path(model, params, path, status, errmsg)
+         if (status /= wa_ok) return
+         p_fc(i) = path%p_fc
+         p_pf(i) = path%p_pf
+         fc_mechanism(i) = path%fc_mechanism
+         pf_mechanism(i) = path%pf_mechanism
+      end do
+   end subroutine critical_sweep
+
+   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the
+   !> full-contact (which = 1) or pull-off (which = 2) mechanism changes, to 1e-10 relative.
+   subroutine mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, errmsg)
+      integer, intent(in) :: model, which
+      real(wp), intent(in) :: alpha, mu_lo, mu_hi
+      real(wp), intent(out) :: mu_change
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: lo, hi, mid
+      integer :: m_lo, m_mid
+
+      lo = mu_lo; hi = mu_hi
+      m_lo = mechanism_at(lo)
+      if (status /= wa_ok) return
+      do while (hi - lo > 1.0e-10_wp*hi)
+         mid = sqrt(lo*hi)
+         m_mid = mechanism_at(mid)
+         if (status /= wa_ok) return
+         if (m_mid == m_lo) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      mu_change = sqrt(lo*hi)
+   contains
+      integer function mechanism_at(mu)
+         real(wp), intent(in) :: mu
+         type(params_type) :: params
+         type(path_type) :: path
+         mechanism_at = -1
+         call new_params(alpha, mu, params, status, errmsg)
+         if (status /= wa_ok) return
+         call load_path(model, params, path, status, errmsg)
+         mechanism_at = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
+      end function mechanism_at
+   end subroutine mechanism_change
 
    !> First local maximum at or after point k (0 if the curve rises to its end).
    pure integer function next_maximum(branch, k)

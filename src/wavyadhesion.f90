@@ -12,6 +12,12 @@ module wavyadhesion
       westergaard_displacement, westergaard_gap
    use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
    use wa_md, only: md_equilibrium, md_roots
+   use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
+      event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
+      event_full_contact_left, event_pull_off, event_branch_end
+   use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
+      mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
+      mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
    implicit none
    private
 
@@ -25,6 +31,12 @@ module wavyadhesion
       westergaard_gap
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
    public :: md_equilibrium, md_roots
+   public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
+      event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
+      event_pull_off, event_branch_end
+   public :: path_type, load_path, critical_forces, critical_sweep, mechanism_change, &
+      stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
+      mechanism_jump_case2, mechanism_snap
 
    character(len=*), parameter, public :: wa_version = "0.1.0"
 

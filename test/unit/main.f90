@@ -8,6 +8,7 @@ program tester
    use test_dw, only: collect_dw
    use test_md, only: collect_md
    use test_reference, only: collect_reference
+   use test_branch, only: collect_branch
    implicit none
    type(unittest_type), allocatable :: tests(:)
    character(len=64) :: suite, only
@@ -34,6 +35,9 @@ program tester
    end if
    if (wanted("reference")) then
       call collect_reference(tests); call run_suite("reference", tests, npass, nfail, only)
+   end if
+   if (wanted("branch")) then
+      call collect_branch(tests); call run_suite("branch", tests, npass, nfail, only)
    end if
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
    if (nfail > 0 .or. npass == 0) error stop 1

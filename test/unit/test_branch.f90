@@ -1,0 +1,207 @@
+!> Continuation, load paths and critical forces (issue 3): folds, switches, agreement with
+!> the point solver, the paper's section 4.1 statements, JKR facts.
+module test_branch
+   use wavyadhesion
+   use wa_kinds, only: pi
+   use harness, only: error_type, unittest_type, new_unittest, check, check_close
+   implicit none
+   private
+
+   public :: collect_branch
+
+contains
+
+   subroutine collect_branch(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest("branch_matches_point_solver", test_matches_points), &
+         new_unittest("folds_have_zero_slope", test_folds), &
+         new_unittest("switches_located", test_switches), &
+         new_unittest("load_continuous_along_branch", test_continuity), &
+         new_unittest("paper_alpha03_mu1_gradual_full_contact", test_paper_mu1), &
+         new_unittest("paper_alpha03_mu5_snaps", test_paper_mu5), &
+         new_unittest("small_mu_only_jump_in", test_small_mu), &
+         new_unittest("jkr_full_contact_facts", test_jkr), &
+         new_unittest("invalid_model", test_invalid)]
+   end subroutine collect_branch
+
+   type(params_type) function params_of(alpha, mu) result(params)
+      real(wp), intent(in) :: alpha, mu
+      integer :: status
+      call new_params(alpha, mu, params, status)
+   end function params_of
+
+   type(branch_type) function traced(alpha, mu) result(b)
+      real(wp), intent(in) :: alpha, mu
+      integer :: status
+      call trace_branch(model_dw, params_of(alpha, mu), b, status)
+      if (status /= wa_ok) b%n = 0
+   end function traced
+
+   !> Every traced point is an equilibrium of the core solver, to 1e-12.
+   subroutine test_matches_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: mus(3) = [1.0_wp, 2.5_wp, 5.0_wp]
+      type(branch_type) :: b
+      type(state_type) :: s
+      integer :: i, j, status
+      do j = 1, size(mus)
+         b = traced(0.3_wp, mus(j))
+         call check(error, b%n > 20, "trace failed")
+         do i = 1, b%n
+            if (b%zone_case(i) == zone_full_contact) cycle
+            call dw_equilibrium(params_of(0.3_wp, mus(j)), b%a_star(i), s, status)
+            call check_close(error, b%c_star(i), s%c_star, 1.0e-12_wp, what="c*")
+            call check_close(error, b%p_star(i), s%p_star, 1.0e-12_wp, 1.0e-12_wp, "P*")
+         end do
+      end do
+   end subroutine test_matches_points
+
+   !> At each fold the slope of P*(a*) from the point solver (Richardson-extrapolated
+   !> central differences) vanishes: |dP*/da*| / |d2P*/da*2| <= 1e-10 places it in a*.
+   subroutine test_folds(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      real(wp) :: a, d1, d2
+      integer :: i, nfold
+      b = traced(0.3_wp, 5.0_wp)
+      nfold = 0
+      do i = 1, b%n
+         if (b%event(i) /= event_fold) cycle
+         nfold = nfold + 1
+         a = b%a_star(i)
+         d1 = slope(0.3_wp, 5.0_wp, a, 1.0e-4_wp)
+         d2 = (slope(0.3_wp, 5.0_wp, a + 1.0e-4_wp, 1.0e-5_wp) - &
+            slope(0.3_wp, 5.0_wp, a - 1.0e-4_wp, 1.0e-5_wp))/2.0e-4_wp
+         call check(error, abs(d1/d2) <= 1.0e-10_wp, "fold not at dP/da = 0")
+         call check(error, b%extremum(i) == merge(1, -1, d2 < 0.0_wp), "fold kind")
+      end do
+      call check(error, nfold == 2, "alpha 0.3, mu 5 has two folds")
+   end subroutine test_folds
+
+   real(wp) function slope(alpha, mu, a, h)
+      real(wp), intent(in) :: alpha, mu, a, h
+      real(wp) :: d_h, d_h2
+      d_h = (load(a + h) - load(a - h))/(2*h)
+      d_h2 = (load(a + h/2) - load(a - h/2))/h
+      slope = (4*d_h2 - d_h)/3
+   contains
+      real(wp) function load(x)
+         real(wp), intent(in) :: x
+         type(state_type) :: s
+         integer :: status
+         call dw_equilibrium(params_of(alpha, mu), x, s, status)
+         load = s%p_star
+      end function load
+   end function slope
+
+   !> A switch event sits where the point solver changes zone case (bisection to 1e-14).
+   subroutine test_switches(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      type(state_type) :: lo, hi
+      integer :: i, status, nswitch
+      b = traced(0.6_wp, 1.0_wp)
+      nswitch = 0
+      do i = 1, b%n
+         if (b%event(i) /= event_switch) cycle
+         nswitch = nswitch + 1
+         call dw_equilibrium(params_of(0.6_wp, 1.0_wp), b%a_star(i) - 1.0e-12_wp, lo, status)
+         call dw_equilibrium(params_of(0.6_wp, 1.0_wp), b%a_star(i) + 1.0e-12_wp, hi, status)
+         call check(error, lo%zone_case /= hi%zone_case, "switch not within 1e-12 in a*")
+      end do
+      call check(error, nswitch == 1, "alpha 0.6, mu 1: one case switch")
+   end subroutine test_switches
+
+   subroutine test_continuity(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      b = traced(0.3_wp, 2.5_wp)
+      call check(error, maxval(abs(b%p_star(2:b%n) - b%p_star(1:b%n - 1))) < 0.02_wp, &
+         "P* jumps between consecutive points")
+      call check(error, all(b%a_star(2:b%n) >= b%a_star(1:b%n - 1)), "DW branch is a graph in a*")
+   end subroutine test_continuity
+
+   !> Paper section 4.1, alpha = 0.3, mu = 1: full contact reached gradually.
+   subroutine test_paper_mu1(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(path_type) :: path
+      type(params_type) :: params
+      integer :: status
+      params = params_of(0.3_wp, 1.0_wp)
+      call load_path(model_dw, params, path, status)
+      call check(error, status == wa_ok, "status")
+      call check(error, path%fc_mechanism == mechanism_gradual, "full contact not gradual")
+      call check_close(error, path%p_fc, 1.0_wp - 0.5_wp*params%sigma0, &
+         1.0e-14_wp, what="P_fc = 1 - Sigma0/2")
+   end subroutine test_paper_mu1
+
+   !> Paper section 4.1, alpha = 0.3, mu = 5: snapping into full contact (C -> D) and
+   !> snapping detachment (F -> G) from the case-2 piece.
+   subroutine test_paper_mu5(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(path_type) :: path
+      integer :: status
+      call load_path(model_dw, params_of(0.3_wp, 5.0_wp), path, status)
+      call check(error, status == wa_ok, "status")
+      call check(error, path%fc_mechanism == mechanism_jump_case1, "no snap into full contact")
+      call check(error, path%pf_mechanism == mechanism_jump_case2, "no snapping detachment")
+      call check(error, path%p_pf < 0.0_wp .and. path%p_fc > 0.0_wp, "signs of P_fc, P_pf")
+   end subroutine test_paper_mu5
+
+   !> mu -> 0: the only jump is the jump-in; contact is lost gradually.
+   subroutine test_small_mu(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(path_type) :: path
+      integer :: status
+      call load_path(model_dw, params_of(0.3_wp, 1.0e-3_wp), path, status)
+      call check(error, status == wa_ok, "status")
+      call check(error, count(path%event(1:path%n) == event_jump_start) == 1, "extra jumps")
+      call check(error, path%pf_mechanism == mechanism_gradual, "pull-off not gradual")
+   end subroutine test_small_mu
+
+   !> JKR: above alpha = (3/4)^(3/4)/sqrt(2) = 0.56988 full contact at zero load; below it
+   !> P_fc is the local maximum of the JKR curve; P_pf = -Infinity.
+   subroutine test_jkr(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(path_type) :: path
+      real(wp) :: alpha_c
+      integer :: status
+      alpha_c = 0.75_wp**0.75_wp/sqrt(2.0_wp)
+      call load_path(model_jkr, params_of(alpha_c*1.001_wp, 1.0_wp), path, status)
+      call check(error, status == wa_ok .and. path%p_fc == 0.0_wp .and. &
+         path%fc_mechanism == mechanism_snap, "above 0.56988: snap at P* = 0")
+      call check(error, path%p_pf < -huge(1.0_wp), "JKR pull-off is -Infinity")
+      call load_path(model_jkr, params_of(0.5_wp, 1.0_wp), path, status)
+      call check_close(error, path%p_fc, jkr_max(0.5_wp), 1.0e-12_wp, what="P_fc = JKR maximum")
+   end subroutine test_jkr
+
+   !> Local maximum of sin^2(pi a) - alpha sqrt(tan(pi a)) by golden section.
+   real(wp) function jkr_max(alpha)
+      real(wp), intent(in) :: alpha
+      real(wp) :: lo, hi, x1, x2
+      integer :: k
+      lo = 0.05_wp; hi = 0.45_wp
+      do k = 1, 200
+         x1 = hi - 0.618033988749895_wp*(hi - lo)
+         x2 = lo + 0.618033988749895_wp*(hi - lo)
+         if (jkr_load(alpha, x1) > jkr_load(alpha, x2)) then
+            hi = x2
+         else
+            lo = x1
+         end if
+      end do
+      jkr_max = jkr_load(alpha, 0.5_wp*(lo + hi))
+   end function jkr_max
+
+   subroutine test_invalid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      character(len=256) :: msg
+      integer :: status
+      msg = ""
+      call trace_branch(7, params_of(0.3_wp, 1.0_wp), b, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "model") > 0, trim(msg))
+   end subroutine test_invalid
+
+end module test_branch
