@@ -1,0 +1,118 @@
+!> Benchmark of the SPEC section 9 targets. Prints figures; asserts nothing.
+!>   fpm run --profile release wavyadhesion-benchmark
+program benchmark
+   use, intrinsic :: iso_fortran_env, only: int64
+   use wavyadhesion
+   implicit none
+
+   write (*, '(a)') "wavyadhesion "//wa_version//" benchmark (one core; medians over repeats)"
+   write (*, '(a)') "target (SPEC 9): DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"
+   write (*, '(a)') "                 MD branch <= 20 ms, critical forces 3 alpha x 200 mu (DW) <= 1 s"
+   call bench_points(model_dw, 0.3_wp, 1.0_wp)
+   call bench_points(model_dw, 0.3_wp, 1000.0_wp)
+   call bench_points(model_dw, 1.0_wp, 0.1_wp)
+   call bench_points(model_md, 0.3_wp, 1.0_wp)
+   call bench_points(model_md, 0.3_wp, 1000.0_wp)
+   call bench_branch(model_dw, 0.3_wp, 1.0_wp)
+   call bench_branch(model_dw, 0.3_wp, 5.0_wp)
+   call bench_branch(model_dw, 0.6_wp, 3.0_wp)
+   call bench_branch(model_md, 0.3_wp, 1.0_wp)
+   call bench_branch(model_md, 0.3_wp, 5.0_wp)
+   call bench_critical()
+
+contains
+
+   real(wp) function seconds()
+      integer(int64) :: count, rate
+      call system_clock(count, rate)
+      seconds = real(count, wp)/real(rate, wp)
+   end function seconds
+
+   !> Median over 5 repeats of the time per point on 2000 a* in (0, 1/2).
+   subroutine bench_points(model, alpha, mu)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha, mu
+      integer, parameter :: n = 2000, repeats = 5
+      type(params_type) :: params
+      type(state_type) :: s
+      real(wp) :: times(repeats), t0, checksum
+      integer :: i, r, status, failures
+      call new_params(alpha, mu, params, status)
+      checksum = 0
+      failures = 0
+      do r = 1, repeats
+         t0 = seconds()
+         do i = 1, n
+            if (model == model_dw) then
+               call dw_equilibrium(params, 0.5_wp*i/(n + 1.0_wp), s, status)
+            else
+               call md_equilibrium(params, 0.5_wp*i/(n + 1.0_wp), s, status)
+            end if
+            if (status /= wa_ok) failures = failures + 1
+            checksum = checksum + s%p_star
+         end do
+         times(r) = (seconds() - t0)/n
+      end do
+      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,es10.3)') "point  ", name(model), &
+         " alpha ", alpha, " mu ", mu, ": ", 1.0e6_wp*median(times), " us/point  (failures ", &
+         failures/repeats, ", checksum ", checksum, ")"
+   end subroutine bench_points
+
+   subroutine bench_branch(model, alpha, mu)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha, mu
+      integer, parameter :: repeats = 7
+      type(params_type) :: params
+      type(branch_type) :: b
+      real(wp) :: times(repeats), t0
+      integer :: r, status
+      call new_params(alpha, mu, params, status)
+      do r = 1, repeats
+         t0 = seconds()
+         call trace_branch(model, params, b, status)
+         times(r) = seconds() - t0
+      end do
+      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,i0,a,i0)') "branch ", name(model), &
+         " alpha ", alpha, " mu ", mu, ": ", 1.0e3_wp*median(times), " ms  (", b%n, &
+         " points, ", count(b%event(1:b%n) == event_fold), " folds, status ", status
+   end subroutine bench_branch
+
+   subroutine bench_critical()
+      real(wp), parameter :: alphas(3) = [0.3_wp, 0.6_wp, 1.0_wp]
+      real(wp) :: mu(200), p_fc(200), p_pf(200), t0, t
+      integer :: fc(200), pf(200), i, j, status
+      mu = [(0.01_wp*(1000.0_wp)**(real(i - 1, wp)/199.0_wp), i=1, 200)]
+      t0 = seconds()
+      do j = 1, 3
+         call critical_sweep(model_dw, alphas(j), mu, p_fc, p_pf, fc, pf, status)
+      end do
+      t = seconds() - t0
+      write (*, '(a,f8.3,a,i0)') "critical DW 3 alpha x 200 mu (0.01..10, log): ", t, &
+         " s  status ", status
+   end subroutine bench_critical
+
+   real(wp) function median(x)
+      real(wp), intent(in) :: x(:)
+      real(wp) :: y(size(x)), tmp
+      integer :: i, j
+      y = x
+      do i = 2, size(y)
+         tmp = y(i)
+         j = i - 1
+         do while (j >= 1)
+            if (y(j) <= tmp) exit
+            y(j + 1) = y(j)
+            j = j - 1
+         end do
+         y(j + 1) = tmp
+      end do
+      median = y((size(y) + 1)/2)
+   end function median
+
+   function name(model)
+      integer, intent(in) :: model
+      character(len=2) :: name
+      name = merge("dw", "md", model == model_dw)
+   end function name
+
+end program benchmark
