@@ -71,7 +71,10 @@ A_MAIN = [1e-6, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.25, 0.3, 0.4, 0.45, 0.49, 0.5 - 1e
 ALPHA_EXT = [1e-4, 1e-3]
 MU_EXT = [1e4, 1e6]
 A_EXT = [1e-12, 1e-9, 0.5 - 1e-12]
-DPS_MAIN = 30
+DPS_MAIN = 34
+# md_extended.txt is thinned (MD at dps 50 costs ~3 s per point): these alpha, mu only; all a*
+MD_EXT_ALPHA = [1e-4, 1e-3, 0.01, 0.3, 1.0, 10.0]
+MD_EXT_MU = [0.001, 0.1, 1.0, 5.0, 100.0, 1000.0, 1e4, 1e6]
 DPS_EXT = 50
 
 LOGFILE = "/tmp/ref.log"
@@ -305,7 +308,7 @@ def refine_root(model, alpha, mu, a, dps, y0, f0, y1, f1):
         ya = mp.mpf(yf)
         yb = ya + mp.mpf(1e-9) * max(1, abs(ya))
         fa, fb = fm(ya), fm(yb)
-        tol = mp.mpf(10) ** (-dps + 3) * max(1, abs(ya))
+        tol = mp.mpf(10) ** (-dps + 4) * max(1, abs(ya))     # near the noise floor of the residual
         ok = False
         for _ in range(30):
             if fb == fa:
@@ -325,7 +328,7 @@ def refine_root(model, alpha, mu, a, dps, y0, f0, y1, f1):
         return St, P
 
 
-def scan(model, alpha, mu, a, step=0.5, ylo=-120.0, yhi=30.0):
+def scan(model, alpha, mu, a, step=0.5, ylo=-120.0, yhi=100.0):
     """Bracket every sign change of the residual in y (fp).  Returns (brackets, f_inf, info)."""
     res = MODELS[model]["residual"]
     deep = MODELS[model]["deep"]
@@ -341,14 +344,23 @@ def scan(model, alpha, mu, a, step=0.5, ylo=-120.0, yhi=30.0):
         if y < -700:
             raise RuntimeError("residual not negative as c* -> a*")
     ys, fs = [y], [fy]
+    coarse = []           # indices of points reached by a coarse step
     # coarse steps while deep on the asymptote (monotone there), then the fine grid
     while y < yhi:
-        st = 4.0 if (fs[-1] < deep and y < -10) else step
+        if fs[-1] < deep and y < -10:
+            st = 4.0          # still on the s -> 0 asymptote
+            coarse.append(len(ys))
+        elif y < 30:
+            st = step         # fine grid
+        elif y < 60:
+            st = 2 * step     # c* within ~1e-7 (1/2 - a*) of 1/2
+        else:
+            st = 4 * step
         y = min(y + st, yhi)
         ys.append(y)
         fs.append(f(y))
-    for i in range(1, len(fs)):
-        if ys[i] - ys[i - 1] > step and fs[i] < fs[i - 1] - 1e-9 * max(1.0, abs(fs[i])):
+    for i in coarse:
+        if fs[i] < fs[i - 1] - 1e-9 * max(1.0, abs(fs[i])):
             notes.append("non-monotone in the coarse region at y=%g" % ys[i])
     finf = f(fp.inf)
     brackets = []
@@ -365,6 +377,10 @@ def scan(model, alpha, mu, a, step=0.5, ylo=-120.0, yhi=30.0):
         elif fs[i] > 0 and fs[i] <= fs[i - 1] and fs[i] <= fs[i + 1]:
             sgn = -1      # local minimum above zero
         else:
+            continue
+        # skip flat noise, and extrema too far from zero to hide a pair of roots between samples
+        var = max(abs(fs[i] - fs[i - 1]), abs(fs[i] - fs[i + 1]))
+        if var <= 1e-9 * max(1.0, abs(fs[i])) or abs(fs[i]) > 10 * var:
             continue
         xa, xb = ys[i - 1], ys[i + 1]
         gr = (math.sqrt(5) - 1) / 2
@@ -504,7 +520,7 @@ def make_model(model, extended, cmd, jobs, md_thin=None):
         for i, r in enumerate(pool.imap(solve_point, tasks, chunksize=1)):
             results.append(r)
             _, al, mu, a, _ = r["task"]
-            desc = " ".join("%d:%s" % (s["case"], mp.nstr(s["c"], 8)) for s in r["states"])
+            desc = " ".join("%d:%s(y=%s)" % (s["case"], mp.nstr(s["c"], 8), mp.nstr(s["y"], 5)) for s in r["states"])
             log("%s %d/%d alpha=%g mu=%g a=%r  %.1fs  states: %s %s" % (
                 name, i + 1, len(tasks), al, mu, a, r["time"], desc or "NONE",
                 ("; " + "; ".join(r["notes"])) if r["notes"] else ""))
@@ -568,7 +584,9 @@ def relerr(x, ref, absfloor=mp.mpf("1e-300")):
 
 
 def check(nrows, seed):
-    """Recompute random rows at dps 50 (fresh scan, fresh refinement) and compare."""
+    """Recompute random points at dps 50 (main files) / 65 (extended files, made at 50) with a
+    fresh scan and refinement, and compare every state.  A third of the MD points are drawn from
+    the points with more than one state."""
     random.seed(seed)
     worst = {}
     for name in ("dw.txt", "md.txt", "dw_extended.txt", "md_extended.txt"):
@@ -577,16 +595,28 @@ def check(nrows, seed):
         rows = read_table(name)
         model = name.split("_")[0].split(".")[0]
         keys = sorted(set((r[0], r[1], r[2]) for r in rows))
-        pick = random.sample(keys, min(nrows, len(keys)))
+        multi = sorted(k for k in keys if sum(1 for r in rows if (r[0], r[1], r[2]) == k) > 1)
+        nm = min(len(multi), nrows // 3)
+        pick = random.sample(multi, nm)
+        pick += random.sample([k for k in keys if k not in pick], min(nrows - nm, len(keys) - nm))
+        cdps = 65 if "extended" in name else 50
+        fdps = DPS_EXT if "extended" in name else DPS_MAIN
+        wfull = dict(c=mp.mpf(0), gap=mp.mpf(0), P=mp.mpf(0))
         wc = wg = wp = mp.mpf(0)
         for k in pick:
             al, mu, a = (float(x) for x in k)
             old = [r for r in rows if (r[0], r[1], r[2]) == k]
-            r = solve_point((model, al, mu, a, 50))
-            with mp.workdps(50):
-                if len(r["states"]) != len(old):
-                    print("%s %s: number of states differs: %d vs %d" % (name, k, len(r["states"]), len(old)))
+            r = solve_point((model, al, mu, a, cdps))
+            r0 = solve_point((model, al, mu, a, fdps))
+            with mp.workdps(cdps):
+                if not (len(r["states"]) == len(old) == len(r0["states"])):
+                    print("%s %s: number of states differs: %d (dps %d) vs %d (dps %d) vs %d (table)" % (
+                        name, k, len(r["states"]), cdps, len(r0["states"]), fdps, len(old)))
                     continue
+                for s, s0 in zip(r["states"], r0["states"]):
+                    for key, w in (("c", "c"), ("gap", "gap"), ("P", "P")):
+                        d = relerr(s0[key], s[key]) if key != "P" or abs(s["P"]) > 1e-3 else abs(s0["P"] - s["P"])
+                        wfull[w] = max(wfull[w], d)
                 for s, o in zip(r["states"], old):
                     ec = relerr(mp.mpf(o[3]), s["c"])
                     eg = relerr(mp.mpf(o[4]), s["gap"])
@@ -597,8 +627,11 @@ def check(nrows, seed):
                         mp.nstr(eg, 3), mp.nstr(s["P"], 22), "abs" if abs(s["P"]) <= 1e-3 else "rel",
                         mp.nstr(ep, 3)))
         worst[name] = (wc, wg, wp)
-        print("%s: max rel diff (table vs dps 50) c* %s, gap %s, P* %s" % (
-            name, mp.nstr(wc, 3), mp.nstr(wg, 3), mp.nstr(wp, 3)))
+        print("%s: max rel diff (table, 20 digits, vs dps %d) c* %s, gap %s, P* %s" % (
+            name, cdps, mp.nstr(wc, 3), mp.nstr(wg, 3), mp.nstr(wp, 3)))
+        print("%s: max rel diff of the full-precision values, dps %d vs dps %d: c* %s, gap %s, P* %s "
+              "(P* absolute where |P*| < 1e-3)" % (name, fdps, cdps, mp.nstr(wfull["c"], 3),
+                                                  mp.nstr(wfull["gap"], 3), mp.nstr(wfull["P"], 3)))
         sys.stdout.flush()
     return worst
 
@@ -691,7 +724,8 @@ def main():
     ap.add_argument("--nrows", type=int, default=10, help="rows per file for --check")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--verify", action="store_true", help="cross checks of integral forms and limits")
-    ap.add_argument("--md-thin", action="store_true", help="thin the extended MD grid")
+    ap.add_argument("--full-md-extended", action="store_true",
+                    help="do not thin the md_extended grid (alpha %s, mu %s by default)" % (MD_EXT_ALPHA, MD_EXT_MU))
     args = ap.parse_args()
     LOGFILE = args.log
     if args.check:
@@ -712,7 +746,10 @@ def main():
             summary.append("%s: %d rows, %.1f s" % (item, n, t))
         elif item in ("dw", "md", "dw_extended", "md_extended"):
             model = item.split("_")[0]
-            r = make_model(model, item.endswith("extended"), cmd, args.jobs)
+            thin = None
+            if item == "md_extended" and not args.full_md_extended:
+                thin = lambda p: p[0] in MD_EXT_ALPHA and p[1] in MD_EXT_MU
+            r = make_model(model, item.endswith("extended"), cmd, args.jobs, thin)
             summary.append("%s: %d rows, %.0f s, %d points with >1 state, %d with none" % (
                 item, r["rows"], r["time"], len(r["multi"]), len(r["nosol"])))
         else:
