@@ -53,7 +53,7 @@ contains
          end do
          times(r) = (seconds() - t0)/n
       end do
-      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,es10.3)') "point  ", name(model), &
+      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,es10.3,a)') "point  ", name(model), &
          " alpha ", alpha, " mu ", mu, ": ", 1.0e6_wp*median(times), " us/point  (failures ", &
          failures/repeats, ", checksum ", checksum, ")"
    end subroutine bench_points
@@ -72,9 +72,9 @@ contains
          call trace_branch(model, params, b, status)
          times(r) = seconds() - t0
       end do
-      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,i0,a,i0)') "branch ", name(model), &
+      write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,i0,a,i0,a)') "branch ", name(model), &
          " alpha ", alpha, " mu ", mu, ": ", 1.0e3_wp*median(times), " ms  (", b%n, &
-         " points, ", count(b%event(1:b%n) == event_fold), " folds, status ", status
+         " points, ", count(b%event(1:b%n) == event_fold), " folds, status ", status, ")"
    end subroutine bench_branch
 
    subroutine bench_critical()

@@ -7,7 +7,9 @@ module wa_curve
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, set_error
    use wa_params, only: params_type
-   use wa_state, only: state_type, zone_inside, model_dw, model_md
+   use wa_state, only: state_type, zone_inside, model_westergaard, model_jkr, model_dw, &
+      model_md
+   use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_residual, dw_state_at
    implicit none
    private
@@ -104,6 +106,13 @@ contains
       select case (model)
       case (model_dw)
          call dw_equilibrium(params, a_star, state, status, errmsg)
+      case (model_jkr, model_westergaard)           ! no cohesive zone: c* = a*
+         status = wa_ok
+         state%a_star = a_star
+         state%c_star = a_star
+         state%zone_case = zone_inside
+         state%p_star = merge(jkr_load(params%alpha, a_star), westergaard_load(a_star), &
+            model == model_jkr)
       case default
          state%c_star = c_hint
          call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)

@@ -192,8 +192,14 @@ contains
       real(wp), intent(in) :: s
       real(wp), intent(out) :: c, d2, omc2
       real(wp) :: d
+      if (s >= 1.0_wp) then               ! c* = 1/2 exactly (the case-2 boundary)
+         c = 1.0_wp
+         d2 = geo%one_minus_a2
+         omc2 = 0.0_wp
+         return
+      end if
       d = s*geo%one_minus_a
-      c = geo%a + d
+      c = min(1.0_wp, geo%a + d)
       d2 = d*(2.0_wp*geo%a + d)
       omc2 = (1.0_wp - s)*geo%one_minus_a*(1.0_wp + c)
    end subroutine zone_of

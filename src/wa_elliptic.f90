@@ -24,8 +24,14 @@
 !>
 !>    W = (sqrt(b1)/C) [-y c1 + (1-y) c2],  cel(kc, y(1+t), 1, 0) = c0 + c1 t + c2 t^2 + ...  (E2)
 !>
-!> (c1 < 0 < c2). cel_pole_series gets c0, c1, c2 from Bartky's quadratically convergent
-!> transformation (Bulirsch 1969), arranged so that no step cancels (see there).
+!> (c1 < 0 < c2). cel_pole_series gets c0, c1, c2 in double precision from Bartky's
+!> quadratically convergent transformation (Bulirsch 1969), arranged so that no step
+!> cancels (see there). For C = 1 (and 1-C^2 < 1e-20 (1-A^2)) and for I_A*:
+!>
+!>    W(A,1) = I_A*(A)/(1-A^2)^2                                                        (E3)
+!>    8 I_A* = s(2 + A^2) - A^2 (4 - A^2) atanh(s),   s = sqrt(1-A^2)                   (E4)
+!>    I_A*   = (2/15) z^(5/2) 2F1(1/2, 2; 7/2; z),     z = 1-A^2                         (E5)
+!>
 !> The equivalent form in Carlson's integrals, derived and checked in tools/check_istar.py,
 !>    W = sqrt(b1)/(2A) [2 al R_F(0,x,y) + (2/3) be R_D(0,y,x) + (2/3) ga R_J(0,x,y,1)],
 !>    al = (xy-2x+1)/(8(x-1)(y-1)),  be = -x(x-y)(xy-2x+2y-1)/(8(x-1)^2(y-1)),
@@ -63,8 +69,8 @@ contains
    !> W = I*(A,C)/(C^2-A^2)^2, (2.25b) of MODEL-NOTES.md scaled to O(1), from accurate
    !> inputs: a = A >= 1e-150, c = C in [A, 1], d2 = C^2-A^2 >= 0, omc2 = 1-C^2 >= 0 (may be
    !> 0), d2 + omc2 = 1-A^2 > 0. At d2 = 0 it returns the limit pi sqrt(1-A^2)/(16A).
-   !> Relative error below 1.5e-15 (measured against mpmath, see doc/accuracy); about
-   !> 80 ns. NaN for invalid input.
+   !> Relative error below 1.5e-15 (measured against mpmath, tools/check_istar.py), about
+   !> 100 ns per call. NaN for invalid input.
    elemental function istar_scaled(a, c, d2, omc2) result(w)
       !> A = sin(pi a*)
       real(wp), intent(in) :: a
