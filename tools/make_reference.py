@@ -15,7 +15,7 @@ then the case-2 state (c* = 1/2) when it is valid.  gap = c* - a* is computed di
 cancellation), as are all differences below.
 
 Numerical method (everything in mpmath; the scan that only brackets roots uses mpmath's fp
-context, the roots and the printed values use mp at mp.dps = 30 (main) or 50 (extended)):
+context, the roots and the printed values use mp at mp.dps = 34 (main) or 50 (extended)):
 
 * The unknown c* is written as C = sin(pi c*) = A + s (1 - A), s in (0,1), and s = 1/(1+exp(-y)),
   q = 1 - s = 1/(1+exp(y)), y in R.  Then C - A = s(1-A), 1 - C = q(1-A), C^2 - A^2 = s(1-A)(C+A)
@@ -44,7 +44,10 @@ context, the roots and the printed values use mp at mp.dps = 30 (main) or 50 (ex
 
 Usage:
   python3 tools/make_reference.py [--only westergaard,jkr,dw,md,dw_extended,md_extended]
-                                  [--jobs N] [--log /tmp/ref.log]
+                                  [--jobs N] [--log /tmp/ref.log] [--full-md-extended]
+  (run it in the background: nohup python3 tools/make_reference.py > /tmp/ref.out 2>&1 &
+   progress goes to the log; each file is written atomically when its grid is done, so a
+   restart only needs --only for the missing files)
   python3 tools/make_reference.py --check [--nrows 10] [--seed S]   # recompute random rows at dps 50
   python3 tools/make_reference.py --verify                          # limit / cross checks
 """
