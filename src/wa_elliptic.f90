@@ -163,9 +163,9 @@ contains
 
    !> Taylor coefficients in t of cel(kc, p(1+t), 1, 0), by Bulirsch's algorithm for p > 0
    !> (Bulirsch 1969; `cel` in Numerical Recipes, 2nd ed., 6.11) reorganised for the pole.
-   !> With Q = p, e = kc, em = 1 and a = 1, b = 0 at the start, the step is
+   !> With Q = p, e = qc = kc, em = 1 and a = 1, b = 0 at the start, the step is
    !>    rho = (Q-e)/(Q+e),  Q' = (Q+e)^2/Q,  a' = 2a - D,  D' = rho D  (D = a - b/sqrt(Q)),
-   !>    em' = em + sqrt(e/em) em,  e' = 2 sqrt(e) em',
+   !>    em' = em + qc,  qc' = 2 sqrt(e),  e' = qc' em'   (the AGM of 1 and kc),
    !> and after N steps cel = (pi/2)(2^N/em) C_0, where C_0 = 1 - R_0 and
    !>    R_m = 1/2 + (rho_m/2) R_(m+1),   R_N = sqrt(Q_N)/(em + sqrt(Q_N)).
    !> Only rho depends on t, through q = ln Q = ln p + ln(1+t) (coefficients al, be). The
@@ -204,7 +204,7 @@ contains
       do m = n, 1, -1
          call fold_back(rho(:, m), sig(:, m), r, c0)
       end do
-      cel = (0.5_wp*pi*2.0_wp**n/em)*[c0, -r(1), -r(2)]
+      cel = scale(0.5_wp*pi/em, n)*[c0, -r(1), -r(2)]            ! (pi/2) 2^n/em
    end function cel_pole_series
 
    !> One backward step R_m = 1/2 + (rho/2) R_(m+1) on (R, C = 1 - R), see cel_pole_series.
