@@ -36,16 +36,21 @@
 !>    W = sqrt(b1)/(2A) [2 al R_F(0,x,y) + (2/3) be R_D(0,y,x) + (2/3) ga R_J(0,x,y,1)],
 !>    al = (xy-2x+1)/(8(x-1)(y-1)),  be = -x(x-y)(xy-2x+2y-1)/(8(x-1)^2(y-1)),
 !>    ga = (x^2y^2-4xy^2+6xy-4x+1)/(8(x-1)^2(y-1)),
-!> is not used: its three terms cancel by factors 8 to 2e4 over the domain and like
-!> 1/(x-1)^2 as C -> A, and R_F, R_D, R_J diverge together as C -> 1 or A -> 0.
+!> is not the default: its three terms cancel by factors 8 to 2e4 over the domain and like
+!> 1/(x-1)^2 as C -> A, and R_F, R_D, R_J diverge together as C -> 1 or A -> 0. It is kept
+!> as istar_carlson (GSL's R_F, R_D, R_J) for the cross-check test and the work-precision
+!> study (doc/accuracy-performance.md).
 module wa_elliptic
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, wa_numerical_error
+   use wa_gsl, only: gsl_sf_result, gsl_sf_ellint_rf_e, gsl_sf_ellint_rd_e, gsl_sf_ellint_rj_e, &
+      gsl_set_error_handler_off, gsl_prec_double, gsl_success
+   use, intrinsic :: iso_c_binding, only: c_funptr
    implicit none
    private
 
-   public :: istar_scaled, ia_star, istar_quadrature
+   public :: istar_scaled, ia_star, istar_quadrature, istar_carlson
 
    !> Relative AGM gap at which Bartky's iteration stops; the last step squares it.
    real(wp), parameter :: agm_gap = 1.0e-9_wp
@@ -311,5 +316,40 @@ contains
       ! d phi/dt = (pi/4)(pi/2) cosh(t)/cosh(u)^2, 1/cosh(u)^2 = 4 ex/(1+ex)^2
       f = f*(0.125_wp*pi**2)*cosh(t)*4.0_wp*ex/(1.0_wp + ex)**2
    end function ts_node
+
+   !> W = I*/(C^2-A^2)^2 from the Carlson form above with GSL's R_F, R_D, R_J (0 < A,
+   !> C < 1, C > A). Loses digits to cancellation (see the module header); GSL failures
+   !> are mapped to wa_numerical_error.
+   subroutine istar_carlson(a, c, d2, omc2, w, status)
+      real(wp), intent(in) :: a, c, d2, omc2
+      real(wp), intent(out) :: w
+      integer, intent(out) :: status
+      type(gsl_sf_result) :: rf, rd, rj
+      type(c_funptr) :: previous
+      real(wp) :: b1, x, y, xm1, ym1, al, be, ga
+      integer :: s1, s2, s3
+
+      w = ieee_value(w, ieee_quiet_nan)
+      status = wa_invalid_argument
+      if (.not. (a > 0.0_wp .and. c < 1.0_wp .and. d2 > 0.0_wp .and. omc2 > 0.0_wp)) return
+      previous = gsl_set_error_handler_off()
+      b1 = (1.0_wp - a)*(1.0_wp + a)
+      x = (c/a)**2
+      y = omc2/b1
+      xm1 = d2/a**2
+      ym1 = -d2/b1
+      al = (x*y - 2*x + 1)/(8*xm1*ym1)
+      be = -x*(x - y)*(x*y - 2*x + 2*y - 1)/(8*xm1**2*ym1)
+      ga = (x**2*y**2 - 4*x*y**2 + 6*x*y - 4*x + 1)/(8*xm1**2*ym1)
+      s1 = gsl_sf_ellint_rf_e(0.0_wp, x, y, gsl_prec_double, rf)
+      s2 = gsl_sf_ellint_rd_e(0.0_wp, y, x, gsl_prec_double, rd)
+      s3 = gsl_sf_ellint_rj_e(0.0_wp, x, y, 1.0_wp, gsl_prec_double, rj)
+      if (any([s1, s2, s3] /= gsl_success)) then
+         status = wa_numerical_error
+         return
+      end if
+      w = sqrt(b1)/(2*a)*(2*al*rf%val + (2.0_wp/3)*be*rd%val + (2.0_wp/3)*ga*rj%val)
+      status = wa_ok
+   end subroutine istar_carlson
 
 end module wa_elliptic

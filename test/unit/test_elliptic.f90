@@ -4,7 +4,7 @@ module test_elliptic
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument
-   use wa_elliptic, only: istar_scaled, ia_star, istar_quadrature
+   use wa_elliptic, only: istar_scaled, ia_star, istar_quadrature, istar_carlson
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
@@ -190,7 +190,8 @@ contains
          new_unittest("c_equals_one", test_c_equals_one), &
          new_unittest("c_to_a_limit", test_c_to_a_limit), &
          new_unittest("extremes_finite", test_extremes_finite), &
-         new_unittest("invalid_input", test_invalid_input)]
+         new_unittest("invalid_input", test_invalid_input), &
+         new_unittest("carlson_form_agrees", test_carlson)]
    end subroutine collect_elliptic
 
    !> istar_scaled against the mpmath table, relative error <= 5e-15.
@@ -334,5 +335,23 @@ contains
          text = text//trim(adjustl(buffer))//merge(", ", ") ", i < size(x))
       end do
    end function label
+
+   !> The textbook Carlson form (GSL R_F, R_D, R_J) agrees where it does not cancel badly.
+   subroutine test_carlson(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: as(4) = [0.1_wp, 0.3_wp, 0.5_wp, 0.9_wp]
+      real(wp), parameter :: cs(4) = [0.3_wp, 0.7_wp, 0.7_wp, 0.95_wp]
+      real(wp) :: w
+      integer :: i, status
+      do i = 1, size(as)
+         call istar_carlson(as(i), cs(i), (cs(i) - as(i))*(cs(i) + as(i)), &
+            (1 - cs(i))*(1 + cs(i)), w, status)
+         call check(error, status == wa_ok, "istar_carlson status")
+         call check_close(error, w, istar_scaled(as(i), cs(i), (cs(i) - as(i))*(cs(i) + as(i)), &
+            (1 - cs(i))*(1 + cs(i))), 1.0e-12_wp, what="Carlson vs AGM")
+      end do
+      call istar_carlson(0.5_wp, 0.4_wp, -0.09_wp, 0.84_wp, w, status)
+      call check(error, status == wa_invalid_argument, "C < A rejected")
+   end subroutine test_carlson
 
 end module test_elliptic
