@@ -1,0 +1,357 @@
+!> Flat f2py facade of the wavyadhesion library (compiled into the extension module
+!> `wavyadhesion._wa_f2py`; the Python layer in wavyadhesion/_core.py is the public face).
+!>
+!> f2py rules kept here (STYLE.md): external subroutines only (no module procedures, no
+!> `value`), kinds from iso_c_binding in every signature (a kind imported from our own
+!> modules would be mapped to C float), explicit-shape arrays sized by leading
+!> arguments, and `status` plus `character(len=256) :: message` last. Each call loops
+!> over a whole numpy array in Fortran and releases the GIL (`!f2py threadsafe`).
+!>
+!> Array routines process every point: a failed point gets NaN (zone case 0) and the
+!> first failure is reported through `ifail` (1-based index, 0 if none), `status` and
+!> `message`; `nfail` counts the failures.
+
+!> Switch GSL's abort-on-error handler off (a host Python process must not abort).
+subroutine fa_init()
+   use, intrinsic :: iso_c_binding, only: c_funptr
+   use wa_gsl, only: gsl_set_error_handler_off
+   implicit none
+   type(c_funptr) :: previous
+   previous = gsl_set_error_handler_off()
+end subroutine fa_init
+
+!> Short fixed text of a status code (wa_status::status_message).
+subroutine fa_status_text(code, message)
+   use, intrinsic :: iso_c_binding, only: c_int
+   use wa_status, only: status_message
+   implicit none
+   !> A status code
+   integer(c_int), intent(in) :: code
+   !> Its text
+   character(len=256), intent(out) :: message
+   message = status_message(int(code))
+end subroutine fa_status_text
+
+!> Westergaard load P* = sin^2(pi a*) at n points   (3.1)
+subroutine fa_westergaard_load(n, a_star, p_star, nfail, ifail, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_validate, only: check_range
+   use wa_kernels, only: westergaard_load
+   implicit none
+   !> Number of points
+   integer(c_int), intent(in) :: n
+   !> Contact half-widths over the period, in [0, 1/2]
+   real(c_double), intent(in) :: a_star(n)
+   !> Loads P*
+   real(c_double), intent(out) :: p_star(n)
+   !> Number of invalid points
+   integer(c_int), intent(out) :: nfail
+   !> Index of the first invalid point (1-based, 0 if none)
+   integer(c_int), intent(out) :: ifail
+   !> wa_ok or the first failure's status
+   integer(c_int), intent(out) :: status
+   !> The first failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   character(len=256) :: msg
+   integer :: i, stat
+
+   nfail = 0; ifail = 0; status = wa_ok; message = ""
+   do i = 1, n
+      call check_range("a_star", a_star(i), 0.0_c_double, 0.5_c_double, "[0, 1/2]", stat, msg)
+      if (stat == wa_ok) then
+         p_star(i) = westergaard_load(a_star(i))
+      else
+         p_star(i) = ieee_value(p_star(i), ieee_quiet_nan)
+         nfail = nfail + 1
+         if (ifail == 0) then
+            ifail = i; status = stat; message = msg
+         end if
+      end if
+   end do
+end subroutine fa_westergaard_load
+
+!> JKR load P* = sin^2(pi a*) - alpha sqrt(tan(pi a*)) at n points   (3.4)
+subroutine fa_jkr_load(n, alpha, a_star, p_star, nfail, ifail, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_validate, only: check_range
+   use wa_kernels, only: jkr_load
+   implicit none
+   !> Number of points
+   integer(c_int), intent(in) :: n
+   !> Johnson's parameter, >= 0
+   real(c_double), intent(in) :: alpha(n)
+   !> Contact half-widths over the period, in [0, 1/2]
+   real(c_double), intent(in) :: a_star(n)
+   !> Loads P* (-Infinity at a* = 1/2)
+   real(c_double), intent(out) :: p_star(n)
+   !> Number of invalid points
+   integer(c_int), intent(out) :: nfail
+   !> Index of the first invalid point (1-based, 0 if none)
+   integer(c_int), intent(out) :: ifail
+   !> wa_ok or the first failure's status
+   integer(c_int), intent(out) :: status
+   !> The first failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   character(len=256) :: msg
+   integer :: i, stat
+
+   nfail = 0; ifail = 0; status = wa_ok; message = ""
+   do i = 1, n
+      call check_range("alpha", alpha(i), 0.0_c_double, huge(1.0_c_double), "[0, inf)", &
+         stat, msg, hi_open=.true.)
+      if (stat == wa_ok) call check_range("a_star", a_star(i), 0.0_c_double, 0.5_c_double, &
+         "[0, 1/2]", stat, msg)
+      if (stat == wa_ok) then
+         p_star(i) = jkr_load(alpha(i), a_star(i))
+      else
+         p_star(i) = ieee_value(p_star(i), ieee_quiet_nan)
+         nfail = nfail + 1
+         if (ifail == 0) then
+            ifail = i; status = stat; message = msg
+         end if
+      end if
+   end do
+end subroutine fa_jkr_load
+
+!> Principal equilibrium of `model` at n points (alpha, mu, a*), broadcast by the caller.
+subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case, nfail, &
+      ifail, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_state, only: state_type
+   use wa_models, only: check_model, model_equilibrium
+   implicit none
+   !> Number of points
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha(n)
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu(n)
+   !> Contact half-widths over the period, in [0, 1/2]
+   real(c_double), intent(in) :: a_star(n)
+   !> Interaction-zone half-widths c*
+   real(c_double), intent(out) :: c_star(n)
+   !> Loads P*
+   real(c_double), intent(out) :: p_star(n)
+   !> Zone cases (1, 2, 3; 0 where the point failed)
+   integer(c_int), intent(out) :: zone_case(n)
+   !> Number of failed points
+   integer(c_int), intent(out) :: nfail
+   !> Index of the first failed point (1-based, 0 if none)
+   integer(c_int), intent(out) :: ifail
+   !> wa_ok or the first failure's status
+   integer(c_int), intent(out) :: status
+   !> The first failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(state_type) :: state
+   character(len=256) :: msg
+   integer :: i, stat, stat_params
+
+   nfail = 0; ifail = 0; status = wa_ok; message = ""
+   call check_model(int(model), stat, message)
+   if (stat /= wa_ok) then
+      nfail = n; ifail = 1; status = stat
+      c_star = ieee_value(1.0_c_double, ieee_quiet_nan); p_star = c_star; zone_case = 0
+      return
+   end if
+   stat_params = -1
+   do i = 1, n
+      msg = ""
+      ! new parameters only where (alpha, mu) change: usually once per array
+      if (i == 1 .or. stat_params /= wa_ok) then
+         call new_params(alpha(i), mu(i), params, stat_params, msg)
+      else if (alpha(i) /= alpha(i - 1) .or. mu(i) /= mu(i - 1)) then
+         call new_params(alpha(i), mu(i), params, stat_params, msg)
+      end if
+      stat = stat_params
+      if (stat == wa_ok) call model_equilibrium(int(model), params, a_star(i), state, stat, msg)
+      if (stat == wa_ok) then
+         c_star(i) = state%c_star
+         p_star(i) = state%p_star
+         zone_case(i) = int(state%zone_case, c_int)
+      else
+         c_star(i) = ieee_value(c_star(i), ieee_quiet_nan)
+         p_star(i) = c_star(i)
+         zone_case(i) = 0
+         nfail = nfail + 1
+         if (ifail == 0) then
+            ifail = i; status = stat; message = msg
+         end if
+      end if
+   end do
+end subroutine fa_equilibrium
+
+!> Every equilibrium of `model` at one point: the first min(n_roots, capacity) states;
+!> status 4 (capacity too small) when n_roots > capacity.
+subroutine fa_roots(capacity, model, alpha, mu, a_star, c_star, p_star, zone_case, &
+      gap_width, n_roots, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_state, only: state_type
+   use wa_models, only: model_roots
+   implicit none
+   !> Length of the output arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Contact half-width over the period, in [0, 1/2]
+   real(c_double), intent(in) :: a_star
+   !> c* of each state
+   real(c_double), intent(out) :: c_star(capacity)
+   !> P* of each state
+   real(c_double), intent(out) :: p_star(capacity)
+   !> Zone case of each state
+   integer(c_int), intent(out) :: zone_case(capacity)
+   !> c* - a* of each state (accurate where the zone is very thin)
+   real(c_double), intent(out) :: gap_width(capacity)
+   !> Number of states (may exceed capacity)
+   integer(c_int), intent(out) :: n_roots
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(state_type) :: states(capacity)
+   integer :: k, n, stat
+
+   message = ""
+   c_star = 0.0_c_double; p_star = 0.0_c_double; zone_case = 0; gap_width = 0.0_c_double
+   n = 0
+   call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call model_roots(int(model), params, a_star, states, n, stat, message)
+   if (stat == wa_ok .or. stat == wa_capacity_too_small) then
+      do k = 1, min(n, int(capacity))
+         c_star(k) = states(k)%c_star
+         p_star(k) = states(k)%p_star
+         zone_case(k) = int(states(k)%zone_case, c_int)
+         gap_width(k) = states(k)%gap_width
+      end do
+   else
+      n = 0
+   end if
+   n_roots = int(n, c_int)
+   status = int(stat, c_int)
+end subroutine fa_roots
+
+!> Validated parameters and what derives from them: Sigma0 and Dcod.
+subroutine fa_params(alpha, mu, sigma0, dcod, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_params, only: params_type, new_params
+   implicit none
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Peak adhesive stress over p*
+   real(c_double), intent(out) :: sigma0
+   !> Maugis-Dugdale opening (+Infinity at mu = 0)
+   real(c_double), intent(out) :: dcod
+   !> wa_ok or wa_invalid_argument
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   integer :: stat
+
+   message = ""
+   call new_params(alpha, mu, params, stat, message)
+   sigma0 = params%sigma0
+   dcod = params%dcod
+   status = int(stat, c_int)
+end subroutine fa_params
+
+!> Reduced modulus 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2   (2.2b)
+subroutine fa_reduced_modulus(e1, nu1, e2, nu2, estar, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_params, only: reduced_modulus
+   implicit none
+   !> Young's modulus of body 1 [Pa]
+   real(c_double), intent(in) :: e1
+   !> Poisson's ratio of body 1
+   real(c_double), intent(in) :: nu1
+   !> Young's modulus of body 2 [Pa]
+   real(c_double), intent(in) :: e2
+   !> Poisson's ratio of body 2
+   real(c_double), intent(in) :: nu2
+   !> Reduced modulus [Pa]
+   real(c_double), intent(out) :: estar
+   !> wa_ok or wa_invalid_argument
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   integer :: stat
+
+   message = ""
+   call reduced_modulus(e1, nu1, e2, nu2, estar, stat, message)
+   status = int(stat, c_int)
+end subroutine fa_reduced_modulus
+
+!> alpha, mu, Sigma0, Dcod and the SI scales from E*, L, Delta, dgamma, sigma0 (SPEC 3).
+subroutine fa_dimensional(estar, period, amplitude, work_of_adhesion, peak_stress, alpha, &
+      mu, sigma0, dcod, pressure, force, length, radius, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_params, only: params_type, scales_type, dimensional_params
+   implicit none
+   !> Reduced modulus [Pa]
+   real(c_double), intent(in) :: estar
+   !> Period L [m]
+   real(c_double), intent(in) :: period
+   !> Amplitude Delta [m]
+   real(c_double), intent(in) :: amplitude
+   !> Work of adhesion [J/m^2]
+   real(c_double), intent(in) :: work_of_adhesion
+   !> Peak adhesive stress [Pa]
+   real(c_double), intent(in) :: peak_stress
+   !> Johnson's parameter
+   real(c_double), intent(out) :: alpha
+   !> Transition parameter
+   real(c_double), intent(out) :: mu
+   !> Peak adhesive stress over p*
+   real(c_double), intent(out) :: sigma0
+   !> Maugis-Dugdale opening
+   real(c_double), intent(out) :: dcod
+   !> p* = pi E* Delta / L [Pa]
+   real(c_double), intent(out) :: pressure
+   !> p* L [N/m]
+   real(c_double), intent(out) :: force
+   !> L [m]
+   real(c_double), intent(out) :: length
+   !> Crest radius R = L^2/(4 pi^2 Delta) [m]
+   real(c_double), intent(out) :: radius
+   !> wa_ok or wa_invalid_argument
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(scales_type) :: scales
+   integer :: stat
+
+   message = ""
+   call dimensional_params(estar, period, amplitude, work_of_adhesion, peak_stress, &
+      params, scales, stat, message)
+   alpha = params%alpha; mu = params%mu; sigma0 = params%sigma0; dcod = params%dcod
+   pressure = scales%pressure; force = scales%force; length = scales%length
+   radius = scales%radius
+   status = int(stat, c_int)
+end subroutine fa_dimensional

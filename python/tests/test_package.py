@@ -1,0 +1,66 @@
+"""Package surface: the public names, the docstring examples, and the C header's
+constants against the Fortran ones."""
+
+import doctest
+import re
+
+import pytest
+
+import wavyadhesion as wa
+from wavyadhesion import _core
+
+
+def test_public_names():
+    for name in ("westergaard_load", "jkr_load", "equilibrium", "roots", "Params",
+                 "WavyAdhesionError", "InvalidArgumentError", "ConvergenceError"):
+        assert hasattr(wa, name)
+    assert wa.MODELS == {"westergaard": 0, "jkr": 1, "dw": 2, "md": 3}
+
+
+def test_docstring_examples():
+    for module in (wa, _core):
+        result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
+        assert result.failed == 0
+
+
+def test_every_public_function_documented():
+    for name in ("westergaard_load", "jkr_load", "equilibrium", "roots"):
+        doc = getattr(wa, name).__doc__
+        assert "Parameters" in doc and "Returns" in doc and "Raises" in doc
+
+
+def _fortran_constants(text):
+    return {k.lower(): int(v) for k, v in
+            re.findall(r"\b(\w+)\s*=\s*(\d+)\b", text)}
+
+
+def test_header_constants_equal_fortran(repo):
+    header = (repo / "include" / "wavyadhesion.h").read_text()
+    c = {k.lower(): int(v) for k, v in re.findall(r"#define\s+(WA_\w+)\s+(\d+)", header)}
+    status = _fortran_constants((repo / "src" / "wa_status.f90").read_text())
+    state = _fortran_constants((repo / "src" / "wa_state.f90").read_text())
+    for name in ("wa_ok", "wa_invalid_argument", "wa_no_solution", "wa_not_converged",
+                 "wa_capacity_too_small", "wa_numerical_error"):
+        assert c[name] == status[name], name
+    for name in ("westergaard", "jkr", "dw", "md"):
+        assert c["wa_model_" + name] == state["model_" + name] == wa.MODELS[name]
+    for c_name, f_name in (("wa_zone_inside", "zone_inside"),
+                           ("wa_zone_whole_period", "zone_whole_period"),
+                           ("wa_zone_full_contact", "zone_full_contact")):
+        assert c[c_name] == state[f_name]
+
+
+def test_meson_lists_every_source(repo):
+    meson = (repo / "python" / "meson.build").read_text()
+    for f in sorted((repo / "src").glob("*.f90")):
+        assert f"'../src/{f.name}'" in meson, f"{f.name} missing from python/meson.build"
+
+
+def test_status_texts_match_c_interface():
+    """wa_status::status_message (through the facade) has the wording the C interface's
+    static table has (test/capi/main.c checks the same strings on the C side)."""
+    want = ["ok", "invalid argument", "no solution", "iteration did not converge",
+            "output capacity too small", "numerical error"]
+    for code, text in enumerate(want):
+        assert _core._text(_core._f.fa_status_text(code)) == text
+    assert _core._text(_core._f.fa_status_text(99)) == "unknown status"

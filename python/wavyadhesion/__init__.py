@@ -1,0 +1,52 @@
+"""wavyadhesion: adhesive contact of a wavy elastic surface against a flat.
+
+Westergaard (no adhesion), JKR (Johnson 1995), double-Westergaard (DW) and
+Maugis-Dugdale (MD) models in dimensionless form, computed by the Fortran library
+through an f2py extension. Functions take numpy arrays and broadcast.
+
+Loads are P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile); widths
+a* = a/L and c* = c/L lie in [0, 1/2]; parameters alpha > 0 (Johnson's) and mu >= 0
+(transition parameter). Models are named "westergaard", "jkr", "dw", "md".
+
+Examples
+--------
+>>> import numpy as np, wavyadhesion as wa
+>>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a=np.linspace(0.01, 0.49, 5))
+>>> eq.zone_case.shape
+(5,)
+"""
+
+from ._core import (
+    MODELS,
+    ConvergenceError,
+    Equilibrium,
+    InvalidArgumentError,
+    NoSolutionError,
+    Params,
+    Scales,
+    State,
+    WavyAdhesionError,
+    equilibrium,
+    jkr_load,
+    roots,
+    westergaard_load,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "MODELS",
+    "ConvergenceError",
+    "Equilibrium",
+    "InvalidArgumentError",
+    "NoSolutionError",
+    "Params",
+    "Scales",
+    "State",
+    "WavyAdhesionError",
+    "equilibrium",
+    "jkr_load",
+    "roots",
+    "westergaard_load",
+    "__version__",
+]

@@ -1,0 +1,829 @@
+!> The Maugis-Dugdale (MD) model of Hui et al. (2001) at a given contact half-width:
+!> every equilibrium (cases 1 and 2), the load (2.27a), the opening (2.27b) and Psi_c (2.27d).
+!>
+!> Unknown. Case 1 (a* < c* < 1/2) is solved in x = ln tan s, where
+!>   cos s = tan(pi a*) / tan(pi c*),  s in (0, pi/2),
+!> so that, with T = tan s, R = sqrt(1+T^2), q = cos(pi a*), k = chi_3(c*) = q sin s:
+!>   chi_1 C = A^2 k/(1-k^2),   chi_2 = artanh k,   1 - k^2 = cos^2 s + A^2 sin^2 s,
+!>   1 - (2/pi) arcsin(cos(pi c*)/cos(pi a*)) = (2/pi) atan(A T),
+!>   tan(pi (c*-a*)) = A q T^2/(R+1) / (q^2 + A^2 R).
+!> Nothing is formed by cancellation: the zone may collapse (large mu: c*-a* ~ 1e-12,
+!> x ~ -14) or fill the gap (c* -> 1/2, x -> +inf) and c*-a* keeps full relative accuracy.
+!>
+!> Psi_c. With w = chi_3(t) = chi_3(c*) r the log-singular integral (2.27d) becomes
+!>   Psi_c = -(2 A q sin^2 s / pi) K,
+!>   K = int_0^1 artanh(r) r dr / ((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)),
+!> whose integrand has a log singularity at r = 1 and, when c* -> 1/2 or a* -> 0, a pole
+!> and a branch point at distance ~ 1/T^2 beyond it. K is summed with fixed Gauss rules
+!> (tools/md_gauss_rules.py): Gauss-Legendre on r in [0, 1/sqrt 2]; in y = sqrt(1 - r^2)
+!> (where those singularities sit at y = +-i/T) geometric levels [y_s 4^-(j+1), y_s 4^-j]
+!> down to y ~ 1/T, then a tail with Gauss rules for the weights u and -u ln u.
+!> Measured error <= 3.2e-15 relative against mpmath from a* = 1e-12 to 1/2 - 1e-12 and
+!> c*-a* from 1e-12 (1/2-a*) to (1 - 1e-10)(1/2-a*), at 1 us per Psi_c; GSL QAWS, QAG
+!> and QAGS reach 1e-12 at best, at 15-40 us (tools/md_quadrature_study.f90).
+!>
+!> Roots. F(x) = opening - Dcod tends to -Dcod as x -> -inf and to a closed form as
+!> x -> +inf (c* = 1/2). F is scanned in steps of 0.8 from below the small-zone estimate
+!> of the first root up to x_mono, beyond which it is monotone; every sign change is
+!> refined by Brent's method (wa_roots) to |dx| <= 4 eps + 2 eps |x|, and at each
+!> sampled extremum that could hide a pair of roots a golden-section search looks for
+!> the sign change. md_equilibrium stops at the first root.
+!>
+!> Case 2 (an extension of the paper, MODEL-NOTES.md): c* = 1/2, P* = A^2 - Sigma0, valid
+!> while the opening at x = L/2 stays within the Dugdale range:
+!>   sqrt(1-A^2) - A^2 ln((1 + sqrt(1-A^2))/A) <= Dcod.
+module wa_md
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, wa_capacity_too_small, &
+      wa_numerical_error, set_error
+   use wa_validate, only: check_range
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
+   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_math, only: log1p
+   implicit none
+   private
+
+   public :: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, md_midgap_opening
+
+   !> sin and cos of pi a*, the opening at c* = 1/2 and the scan range in x = ln tan s.
+   type :: md_geometry
+      real(wp) :: a_star = 0.0_wp
+      !> A = sin(pi a*), q = cos(pi a*) (from 1/2 - a*, exact near a* = 1/2)
+      real(wp) :: a = 0.0_wp, q = 0.0_wp
+      !> Opening at x = L/2 with the zone filling the gap: q - A^2 artanh(q)
+      real(wp) :: opening_top = 0.0_wp
+      !> Beyond x_mono the opening approaches opening_top monotonically;
+      !> at x_top, c* rounds to 1/2.
+      real(wp) :: x_mono = 0.0_wp, x_top = 0.0_wp
+   end type md_geometry
+
+   !> The zone at one value of the unknown x.
+   type :: md_zone
+      !> T = tan s, R = sqrt(1 + T^2), sin s, cos s
+      real(wp) :: t = 0.0_wp, r = 0.0_wp, sn = 0.0_wp, cs = 0.0_wp
+      !> k = chi_3(c*) = q sin s, omk2 = 1 - k^2, chi2 = artanh(k)   (2.27c)
+      real(wp) :: k = 0.0_wp, omk2 = 0.0_wp, chi2 = 0.0_wp
+   end type md_zone
+
+   !> Scan step in x (a factor e^0.8 = 2.2 in tan s) and the golden-section ratio.
+   real(wp), parameter :: scan_step = 0.8_wp
+   real(wp), parameter :: golden = 0.3819660112501051518_wp
+   !> Upper limit of x (T = e^300): c* is then 1/2 to working precision for a* > 1e-120.
+   real(wp), parameter :: x_limit = 300.0_wp
+   !> Below this a*, the zone could not be resolved in double precision (A^2 underflows
+   !> against cos^2 s); such a* return wa_numerical_error.
+   real(wp), parameter :: a_star_min = 1.0e-100_wp
+   integer, parameter :: max_iterations = 200
+   !> At most this many case-1 roots per a* (more: wa_numerical_error; 2 is the most seen).
+   integer, parameter :: max_roots = 8
+   !> Split point r_s = y_s = 1/sqrt 2 of the Psi_c integral.
+   real(wp), parameter :: y_split = 0.70710678118654752440_wp
+
+   !> Inner nodes r^2, r in (0, 1/sqrt 2)
+   real(wp), parameter :: inner_r2(14) = [ &
+      2.35167379832051038133e-5_wp, &
+      6.40195734530782078471e-4_wp, &
+      3.73242318920232835505e-3_wp, &
+      1.22232159226392005235e-2_wp, &
+      2.93729855690786408654e-2_wp, &
+      5.79509957683737626726e-2_wp, &
+      9.94457468156824182017e-2_wp, &
+      1.53473221169354249235e-1_wp, &
+      2.17507180232318642890e-1_wp, &
+      2.86997303748155686848e-1_wp, &
+      3.55869668328481935598e-1_wp, &
+      4.17333080724084824950e-1_wp, &
+      4.64857637566317540747e-1_wp, &
+      4.93165421086389374525e-1_wp]
+   !> Inner weights with artanh(r) r folded in
+   real(wp), parameter :: inner_w(14) = [ &
+      2.92000318381461078877e-7_wp, &
+      1.81471250198594222734e-5_wp, &
+      1.60557182225295172524e-4_wp, &
+      6.82151308768446365173e-4_wp, &
+      1.94600608032087339788e-3_wp, &
+      4.28842438152266944469e-3_wp, &
+      7.83555298339363557341e-3_wp, &
+      1.23398515848563910233e-2_wp, &
+      1.71012053159010875107e-2_wp, &
+      2.10197275357489172920e-2_wp, &
+      2.28037162955076409355e-2_wp, &
+      2.13275550792784409470e-2_wp, &
+      1.60855328892375438823e-2_wp, &
+      7.60127407628878994121e-3_wp]
+   !> Level nodes on [1/4, 1] (times y_s 4^-j)
+   real(wp), parameter :: level_eta(16) = [ &
+      2.53974649378131275276e-1_wp, &
+      2.70784366347537783971e-1_wp, &
+      3.00388299104563096045e-1_wp, &
+      3.41723346866873862289e-1_wp, &
+      3.93296408349008594332e-1_wp, &
+      4.53243708378539730122e-1_wp, &
+      5.19398668457777907539e-1_wp, &
+      5.89370308810885959931e-1_wp, &
+      6.60629691189114040069e-1_wp, &
+      7.30601331542222092461e-1_wp, &
+      7.96756291621460269878e-1_wp, &
+      8.56703591650991405668e-1_wp, &
+      9.08276653133126137711e-1_wp, &
+      9.49611700895436903955e-1_wp, &
+      9.79215633652462216029e-1_wp, &
+      9.96025350621868724724e-1_wp]
+   !> Level weights on [1/4, 1]
+   real(wp), parameter :: level_w(16) = [ &
+      1.01821722794077855694e-2_wp, &
+      2.33450714769929598236e-2_wp, &
+      3.56844418809347943037e-2_wp, &
+      4.67358642208252020197e-2_wp, &
+      5.60984958062162745306e-2_wp, &
+      6.34336947731259518210e-2_wp, &
+      6.84762806418463458250e-2_wp, &
+      7.10439789206506861070e-2_wp, &
+      7.10439789206506861070e-2_wp, &
+      6.84762806418463458250e-2_wp, &
+      6.34336947731259518210e-2_wp, &
+      5.60984958062162745306e-2_wp, &
+      4.67358642208252020197e-2_wp, &
+      3.56844418809347943037e-2_wp, &
+      2.33450714769929598236e-2_wp, &
+      1.01821722794077855694e-2_wp]
+   !> Tail nodes, weight u on [0, 1]
+   real(wp), parameter :: tail_u(12) = [ &
+      2.15620631658503609081e-2_wp, &
+      7.10578987355889821512e-2_wp, &
+      1.45447456235064119210e-1_wp, &
+      2.40401110474772946257e-1_wp, &
+      3.50399349722745007234e-1_wp, &
+      4.69049150687182329371e-1_wp, &
+      5.89454918798542317511e-1_wp, &
+      7.04619115737419778377e-1_wp, &
+      8.07848945470145959009e-1_wp, &
+      8.93145509116523342366e-1_wp, &
+      9.55553536844592276975e-1_wp, &
+      9.91460945011572580631e-1_wp]
+   !> Tail weights, weight u on [0, 1]
+   real(wp), parameter :: tail_uw(12) = [ &
+      7.75182220938028357246e-4_wp, &
+      4.44480779566846232280e-3_wp, &
+      1.24360091664222656075e-2_wp, &
+      2.48767804092654320125e-2_wp, &
+      4.04516537069136167606e-2_wp, &
+      5.66138437136676319437e-2_wp, &
+      7.01093399976300944959e-2_wp, &
+      7.76963168155310266288e-2_wp, &
+      7.68966026800410062812e-2_wp, &
+      6.66067506266731981308e-2_wp, &
+      4.74278519803774701343e-2_wp, &
+      2.16648608868717673246e-2_wp]
+   !> Tail nodes, weight -u ln u on [0, 1]
+   real(wp), parameter :: tail_l(12) = [ &
+      1.70013795267640148411e-2_wp, &
+      5.98078642017850767850e-2_wp, &
+      1.26553760500982409696e-1_wp, &
+      2.13862481335237767970e-1_wp, &
+      3.17079280087974799177e-1_wp, &
+      4.30580507137266263087e-1_wp, &
+      5.48111692167531734575e-1_wp, &
+      6.63152369381817392822e-1_wp, &
+      7.69292280991441746328e-1_wp, &
+      8.60599479365869585480e-1_wp, &
+      9.31959822654299476956e-1_wp, &
+      9.79365677563646035481e-1_wp]
+   !> Tail weights, weight -u ln u on [0, 1]
+   real(wp), parameter :: tail_lw(12) = [ &
+      2.08452317659147343898e-3_wp, &
+      9.30170392985194625265e-3_wp, &
+      2.03278600334847812181e-2_wp, &
+      3.17100445782286742715e-2_wp, &
+      3.98289709479729356832e-2_wp, &
+      4.23019213257234691434e-2_wp, &
+      3.86832128895214024651e-2_wp, &
+      3.04071189356439782774e-2_wp, &
+      2.01076578867880801463e-2_wp, &
+      1.06075058198085531287e-2_wp, &
+      3.93677098256832430168e-3_wp, &
+      7.02709493816381673044e-4_wp]
+
+
+contains
+
+   !> Principal MD equilibrium at a*: the case-1 state with the smallest c*, else the
+   !> case-2 state (c* = 1/2, P* = A^2 - Sigma0). a* = 1/2: full contact at the threshold
+   !> P* = 1 - Sigma0 (zone_case 3); mu = 0: Westergaard, case 2 with P* = A^2.
+   !> a* = 0 (no contact) returns wa_no_solution; so does a* where neither case holds.
+   !> 0 < a* < 1e-100 returns wa_numerical_error (not resolved in double precision).
+   pure subroutine md_equilibrium(params, a_star, state, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      type(state_type), intent(out) :: state
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: states(1)
+      integer :: n_roots
+
+      call solve(params, a_star, .true., states, n_roots, status, errmsg)
+      if (status == wa_ok) state = states(1)
+   end subroutine md_equilibrium
+
+   !> Every MD equilibrium at a*: the case-1 roots of (2.27b) by increasing c*, then the
+   !> case-2 state where its condition holds. n_roots is the total; if it exceeds
+   !> size(states), the first size(states) are stored and status = wa_capacity_too_small.
+   !> Status and special a* as for md_equilibrium.
+   pure subroutine md_roots(params, a_star, states, n_roots, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      type(state_type), intent(inout) :: states(:)
+      integer, intent(out) :: n_roots
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: found(max_roots + 1)
+      integer :: n
+
+      call solve(params, a_star, .false., found, n_roots, status, errmsg)
+      if (status /= wa_ok) return
+      n = min(n_roots, size(states), size(found))
+      states(1:n) = found(1:n)
+      if (n_roots > size(states)) then
+         call set_error(wa_capacity_too_small, "md_roots: states has room for fewer "// &
+            "than all equilibrium states; n_roots is the number needed", status, errmsg)
+      end if
+   end subroutine md_roots
+
+   !> Load P* of the case-1 state (a*, c* = a* + gap)   (2.27a):
+   !>   P* = A^2 - Sigma0 [1 - (2/pi) arcsin(cos(pi c*)/cos(pi a*))].
+   !> NaN outside 0 < a* < 1/2, 0 <= gap <= 1/2 - a*.
+   elemental function md_load(params, a_star, gap) result(p)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, gap
+      real(wp) :: p
+      type(md_geometry) :: geo
+      real(wp) :: x
+
+      if (.not. valid_zone(a_star, gap)) then
+         p = ieee_value(p, ieee_quiet_nan)
+         return
+      end if
+      geo = geometry(a_star)
+      x = x_of_gap(geo, gap)
+      p = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)
+   end function md_load
+
+   !> Left side of (2.27b), the normalised opening at x = c*:
+   !>   chi_1 C - P* chi_2 + Sigma0 Psi_c(c*, a*),   c* = a* + gap;
+   !> a case-1 equilibrium is where it equals Dcod. NaN outside the domain of md_load.
+   elemental function md_opening(params, a_star, gap) result(delta)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, gap
+      real(wp) :: delta
+      type(md_geometry) :: geo
+
+      if (.not. valid_zone(a_star, gap)) then
+         delta = ieee_value(delta, ieee_quiet_nan)
+         return
+      end if
+      geo = geometry(a_star)
+      delta = opening(params, geo, x_of_gap(geo, gap))
+   end function md_opening
+
+   !> Psi_c(c*, a*) of (2.27d) for c* = a* + gap; -artanh(cos(pi a*)) at c* = 1/2.
+   !> NaN outside the domain of md_load.
+   elemental function md_psi_c(a_star, gap) result(psi)
+      real(wp), intent(in) :: a_star, gap
+      real(wp) :: psi
+      type(md_geometry) :: geo
+      real(wp) :: x
+
+      if (.not. valid_zone(a_star, gap)) then
+         psi = ieee_value(psi, ieee_quiet_nan)
+         return
+      end if
+      geo = geometry(a_star)
+      x = x_of_gap(geo, gap)
+      psi = psi_c(geo, zone_at(geo, x))
+   end function md_psi_c
+
+   !> Opening at x = L/2 of the case-2 state, sqrt(1-A^2) - A^2 ln((1+sqrt(1-A^2))/A):
+   !> case 2 holds where it is <= Dcod. NaN outside 0 < a* <= 1/2.
+   elemental function md_midgap_opening(a_star) result(delta)
+      real(wp), intent(in) :: a_star
+      real(wp) :: delta
+      if (.not. (a_star > 0.0_wp .and. a_star <= 0.5_wp)) then
+         delta = ieee_value(delta, ieee_quiet_nan)
+         return
+      end if
+      delta = top_opening(sin(pi*a_star), sin(pi*(0.5_wp - a_star)))
+   end function md_midgap_opening
+
+
+   ! ------------------------------------------------------------ the solver
+
+   !> Validate, treat the special cases, then find the case-1 roots (all, or only the
+   !> first) and add the case-2 state.
+   pure subroutine solve(params, a_star, first_only, states, n_states, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      logical, intent(in) :: first_only
+      type(state_type), intent(inout) :: states(:)
+      integer, intent(out) :: n_states, status
+      character(len=*), intent(inout), optional :: errmsg
+      type(md_geometry) :: geo
+      real(wp) :: xr(max_roots)
+      integer :: n_found, i
+
+      n_states = 0
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return
+      if (a_star == 0.0_wp) then
+         call set_error(wa_no_solution, "md: a_star = 0 is no contact; MD equilibria "// &
+            "exist for 0 < a_star <= 1/2", status, errmsg)
+         return
+      end if
+      if (a_star < a_star_min) then
+         call set_error(wa_numerical_error, "md: a_star below 1e-100 is not resolved in "// &
+            "double precision", status, errmsg)
+         return
+      end if
+      geo = geometry(a_star)
+      if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
+         n_states = 1
+         states(1) = case2_state(params, geo)
+         return
+      end if
+      call find_roots(params, geo, first_only, xr, n_found, status, errmsg)
+      if (status /= wa_ok) return
+      if (n_found > max_roots) then
+         call set_error(wa_numerical_error, "md: more case-1 roots at one a_star than "// &
+            "the solver keeps (8)", status, errmsg)
+         return
+      end if
+      do i = 1, min(n_found, size(states))
+         states(i) = case1_state(params, geo, xr(i))
+      end do
+      n_states = n_found
+      if (first_only .and. n_found > 0) return
+      if (geo%opening_top <= params%dcod) then
+         n_states = n_states + 1
+         if (n_states <= size(states)) states(n_states) = case2_state(params, geo)
+      else if (n_found == 0) then
+         call set_error(wa_no_solution, "md: no case-1 root, and case 2 fails: the "// &
+            "opening at x = L/2 exceeds Dcod", status, errmsg)
+      end if
+   end subroutine solve
+
+   !> Roots of F(x) = opening - Dcod, increasing: a scan from below the first root
+   !> (F -> -Dcod as x -> -inf) to x_mono, each sign change refined by Brent, hidden
+   !> pairs looked for at sampled extrema; then the monotone stretch up to c* = 1/2.
+   pure subroutine find_roots(params, geo, first_only, xr, n_found, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      logical, intent(in) :: first_only
+      real(wp), intent(out) :: xr(:)
+      integer, intent(out) :: n_found, status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: xs(3), fs(3)
+      integer :: n_pts
+
+      xs = 0.0_wp
+      fs = 0.0_wp
+      n_found = 0
+      status = wa_ok
+      ! the opening is below opening_top + Sigma0 artanh(q) (Psi_c <= 0, Phi <= 1)
+      if (params%dcod > geo%opening_top + params%sigma0*artanh_of(geo%q, geo%a**2)) return
+      call scan_start(params, geo, xs(3), fs(3), status, errmsg)
+      if (status /= wa_ok) return
+      n_pts = 1
+      do while (xs(3) < geo%x_mono)
+         xs(1:2) = xs(2:3)
+         fs(1:2) = fs(2:3)
+         xs(3) = min(xs(2) + scan_step, geo%x_mono)
+         fs(3) = residual(params, geo, xs(3))
+         n_pts = n_pts + 1
+         if ((fs(2) < 0.0_wp) .neqv. (fs(3) < 0.0_wp)) then
+            call add_root(params, geo, xs(2), fs(2), xs(3), fs(3), xr, n_found, status, errmsg)
+         else if (n_pts >= 3) then
+            call hidden_pair(params, geo, xs, fs, xr, n_found, status, errmsg)
+         end if
+         if (status /= wa_ok .or. (first_only .and. n_found > 0)) return
+      end do
+      call top_root(params, geo, xs(3), fs(3), xr, n_found, status, errmsg)
+   end subroutine find_roots
+
+   !> A point x_lo with F(x_lo) < 0 just below the first root, placed by the small-zone
+   !> expansion F ~ (Sigma0 A q/pi) s^2 + (2/3) A^2 q^3 s^3 - Dcod.
+   pure subroutine scan_start(params, geo, x_lo, f_lo, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(out) :: x_lo, f_lo
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: s_est
+      integer :: i
+
+      s_est = min(1.0_wp, sqrt(pi*params%dcod/(params%sigma0*geo%a*geo%q)), &
+         (1.5_wp*params%dcod/(geo%a**2*geo%q**3))**(1.0_wp/3.0_wp))
+      x_lo = min(log(s_est) - 1.5_wp, geo%x_mono - scan_step)
+      do i = 1, 40
+         f_lo = residual(params, geo, x_lo)
+         if (f_lo < 0.0_wp) then
+            status = wa_ok
+            return
+         end if
+         x_lo = x_lo - 3.0_wp
+         if (x_lo < -650.0_wp) exit
+      end do
+      call set_error(wa_not_converged, "md: the opening stays above Dcod as the zone "// &
+         "shrinks; no bracket for the first case-1 root", status, errmsg)
+   end subroutine scan_start
+
+   !> Beyond x_mono: a root iff F(x_mono) and F(+inf) = opening_top - Dcod differ in sign.
+   !> If even at x_top (where c* rounds to 1/2) F keeps its sign, the root is c* = 1/2.
+   pure subroutine top_root(params, geo, x_b, f_b, xr, n_found, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x_b, f_b
+      real(wp), intent(inout) :: xr(:)
+      integer, intent(inout) :: n_found
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: f_hi
+
+      status = wa_ok
+      if ((f_b < 0.0_wp) .eqv. (geo%opening_top - params%dcod < 0.0_wp)) return
+      f_hi = residual(params, geo, geo%x_top)
+      if ((f_b < 0.0_wp) .neqv. (f_hi < 0.0_wp)) then
+         call add_root(params, geo, x_b, f_b, geo%x_top, f_hi, xr, n_found, status, errmsg)
+      else
+         call store(xr, n_found, geo%x_top)
+      end if
+   end subroutine top_root
+
+   !> Refine a sign change of F on [x1, x2] with Brent's method and store the root.
+   pure subroutine add_root(params, geo, x1, f1, x2, f2, xr, n_found, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x1, f1, x2, f2
+      real(wp), intent(inout) :: xr(:)
+      integer, intent(inout) :: n_found
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: x
+      logical :: done
+      integer :: iter
+
+      call brent_init(solver, x1, f1, x2, f2, 4.0_wp*epsilon(1.0_wp))
+      do iter = 1, max_iterations
+         call brent_propose(solver, x, done)
+         if (done) exit
+         call brent_accept(solver, residual(params, geo, x))
+      end do
+      if (.not. done) then
+         call set_error(wa_not_converged, "md: Brent's iteration for a case-1 root of "// &
+            "(2.27b) did not converge", status, errmsg)
+         return
+      end if
+      status = wa_ok
+      call store(xr, n_found, solver%b)
+   end subroutine add_root
+
+   !> Two roots between samples: at a sampled extremum xs(2) of one sign that may reach
+   !> 0 (is_extremum), search the extremum by golden sections until F changes sign there,
+   !> then refine both roots.
+   pure subroutine hidden_pair(params, geo, xs, fs, xr, n_found, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: xs(3), fs(3)
+      real(wp), intent(inout) :: xr(:)
+      integer, intent(inout) :: n_found
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: xm, fm
+      logical :: found
+
+      status = wa_ok
+      if (.not. is_extremum(fs)) return
+      call probe_extremum(params, geo, xs, fs, found, xm, fm)
+      if (.not. found) return
+      call add_root(params, geo, xs(1), fs(1), xm, fm, xr, n_found, status, errmsg)
+      if (status /= wa_ok) return
+      call add_root(params, geo, xm, fm, xs(3), fs(3), xr, n_found, status, errmsg)
+   end subroutine hidden_pair
+
+   !> True where fs(2) is an extremum of one-signed samples that may hide two roots: the
+   !> extremum could reach 0 if F went on beyond it by twice the larger of the rises seen
+   !> between the samples (a kinked peak with straight flanks needs once).
+   pure logical function is_extremum(fs)
+      real(wp), intent(in) :: fs(3)
+      real(wp) :: g(3)
+      g = fs
+      if (fs(2) >= 0.0_wp) g = -fs
+      is_extremum = .false.
+      if (any(g >= 0.0_wp) .or. g(2) < g(1) .or. g(2) < g(3)) return
+      is_extremum = g(2) + 2.0_wp*max(g(2) - g(1), g(2) - g(3)) >= 0.0_wp
+   end function is_extremum
+
+   !> Golden-section search for the extremum of F between xs(1) and xs(3); found when F
+   !> changes sign at xm, given up when is_extremum says it cannot (or the bracket is
+   !> below 1e-10: a double root, which counts as none).
+   pure subroutine probe_extremum(params, geo, xs, fs, found, xm, fm)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: xs(3), fs(3)
+      logical, intent(out) :: found
+      real(wp), intent(out) :: xm, fm
+      real(wp) :: x(3), f(3), xn, fn, sgn
+      integer :: iter
+
+      x = xs
+      f = fs
+      sgn = merge(-1.0_wp, 1.0_wp, fs(2) >= 0.0_wp)   ! maximise sgn*F
+      found = .false.
+      xm = x(2); fm = f(2)
+      do iter = 1, max_iterations
+         if (x(3) - x(1) <= 1.0e-10_wp*max(1.0_wp, abs(x(2)))) return
+         if (.not. is_extremum(f)) return
+         if (x(3) - x(2) > x(2) - x(1)) then
+            xn = x(2) + golden*(x(3) - x(2))
+         else
+            xn = x(2) - golden*(x(2) - x(1))
+         end if
+         fn = residual(params, geo, xn)
+         xm = xn; fm = fn
+         found = (fn < 0.0_wp) .neqv. (f(2) < 0.0_wp)
+         if (found) return
+         call golden_update(x, f, xn, fn, sgn)
+      end do
+   end subroutine probe_extremum
+
+   !> Keep the triple around the largest sgn*F after a new point (xn, fn).
+   pure subroutine golden_update(x, f, xn, fn, sgn)
+      real(wp), intent(inout) :: x(3), f(3)
+      real(wp), intent(in) :: xn, fn, sgn
+      if (sgn*fn >= sgn*f(2)) then
+         if (xn > x(2)) then
+            x(1) = x(2); f(1) = f(2)
+         else
+            x(3) = x(2); f(3) = f(2)
+         end if
+         x(2) = xn; f(2) = fn
+      else if (xn > x(2)) then
+         x(3) = xn; f(3) = fn
+      else
+         x(1) = xn; f(1) = fn
+      end if
+   end subroutine golden_update
+
+   !> Append a root (counted even where xr is full).
+   pure subroutine store(xr, n_found, x)
+      real(wp), intent(inout) :: xr(:)
+      integer, intent(inout) :: n_found
+      real(wp), intent(in) :: x
+      n_found = n_found + 1
+      if (n_found <= size(xr)) xr(n_found) = x
+   end subroutine store
+
+
+   ! ------------------------------------------------------------ the equations
+
+   !> F(x) = opening - Dcod, the residual of (2.27b).
+   pure function residual(params, geo, x) result(f)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      real(wp) :: f
+      f = opening(params, geo, x) - params%dcod
+   end function residual
+
+   !> chi_1 C - P* chi_2 + Sigma0 Psi_c   (2.27b), as the Westergaard part
+   !> A^2 (k/(1-k^2) - artanh k) plus Sigma0 times the Dugdale part Phi chi_2 + Psi_c.
+   pure function opening(params, geo, x) result(delta)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      real(wp) :: delta
+      type(md_zone) :: z
+      if (x >= x_limit) then
+         delta = geo%opening_top
+         return
+      end if
+      z = zone_at(geo, x)
+      delta = geo%a**2*excess(z%k, z%omk2, z%chi2) &
+         + params%sigma0*(dugdale_fraction(geo, x)*z%chi2 + psi_c(geo, z))
+   end function opening
+
+   !> 1 - (2/pi) arcsin(cos(pi c*)/cos(pi a*)) = (2/pi) atan(A T)   (2.27a)
+   pure function dugdale_fraction(geo, x) result(phi)
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      real(wp) :: phi
+      phi = (2.0_wp/pi)*atan(geo%a*exp(min(x, x_limit)))
+   end function dugdale_fraction
+
+   !> k/(1-k^2) - artanh k = sum_{j>=1} 2j/(2j+1) k^(2j+1), without cancellation:
+   !> k^3 (1/(1-k^2) - sum_j k^(2j)/(2j+3)) for k < 1/4.
+   pure function excess(k, omk2, chi2) result(e)
+      real(wp), intent(in) :: k, omk2, chi2
+      real(wp) :: e
+      real(wp) :: k2, series
+      integer :: j
+      if (k >= 0.25_wp) then
+         e = k/omk2 - chi2
+         return
+      end if
+      k2 = k*k
+      series = 1.0_wp/29.0_wp
+      do j = 12, 0, -1
+         series = 1.0_wp/real(2*j + 3, wp) + k2*series
+      end do
+      e = k*k2*(1.0_wp/omk2 - series)
+   end function excess
+
+   !> artanh(k) = (1/2) ln((1+k)/(1-k)) from k and 1-k^2, accurate at both ends.
+   pure function artanh_of(k, omk2) result(y)
+      real(wp), intent(in) :: k, omk2
+      real(wp) :: y
+      y = 0.5_wp*log1p(2.0_wp*k*(1.0_wp + k)/omk2)
+   end function artanh_of
+
+   !> q - A^2 artanh(q): the opening at x = L/2 with c* = 1/2.
+   pure function top_opening(a, q) result(delta)
+      real(wp), intent(in) :: a, q
+      real(wp) :: delta
+      delta = a**2*excess(q, a**2, artanh_of(q, a**2))
+   end function top_opening
+
+   !> Psi_c = -(2 A q sin^2 s/pi) K   (2.27d)
+   pure function psi_c(geo, z) result(psi)
+      type(md_geometry), intent(in) :: geo
+      type(md_zone), intent(in) :: z
+      real(wp) :: psi
+      psi = -(2.0_wp/pi)*geo%a*geo%q*z%sn**2*(k_inner(z) + k_outer(z))
+   end function psi_c
+
+   !> int_0^{1/sqrt 2} artanh(r) r dr / ((1 - k^2 r^2) sqrt(1 - sin^2 s r^2))
+   pure function k_inner(z) result(total)
+      type(md_zone), intent(in) :: z
+      real(wp) :: total
+      real(wp) :: k2, s2
+      integer :: i
+      k2 = z%k**2
+      s2 = z%sn**2
+      total = 0.0_wp
+      do i = 1, size(inner_r2)
+         total = total + inner_w(i)/((1.0_wp - k2*inner_r2(i))*sqrt(1.0_wp - s2*inner_r2(i)))
+      end do
+   end function k_inner
+
+   !> The rest of K in y = sqrt(1 - r^2), y in [0, 1/sqrt 2]:
+   !>   int (ln(1+r) - ln y) y dy / ((1 - k^2 + k^2 y^2) sqrt(cos^2 s + sin^2 s y^2)),
+   !> on levels [y_s 4^-(j+1), y_s 4^-j], j < m, down to y_s 4^-m <= 1/T, then the tail.
+   pure function k_outer(z) result(total)
+      type(md_zone), intent(in) :: z
+      real(wp) :: total
+      real(wp) :: top, part, y, y2, r
+      integer :: m, j, i
+
+      m = 0
+      if (y_split*z%t > 1.0_wp) m = ceiling(log(y_split*z%t)/log(4.0_wp))
+      total = 0.0_wp
+      top = y_split
+      do j = 1, m
+         part = 0.0_wp
+         do i = 1, size(level_eta)
+            y = top*level_eta(i)
+            y2 = y*y
+            r = sqrt(1.0_wp - y2)
+            part = part + level_w(i)*log((1.0_wp + r)/y)*y*kernel(z, y2)
+         end do
+         total = total + top*part
+         top = 0.25_wp*top
+      end do
+      total = total + k_tail(z, top)
+   end function k_outer
+
+   !> int_0^d (ln(1+r) - ln y) y kernel dy with the Gauss rules for u and -u ln u.
+   pure function k_tail(z, d) result(total)
+      type(md_zone), intent(in) :: z
+      real(wp), intent(in) :: d
+      real(wp) :: total
+      real(wp) :: y, log_d, part_u, part_l
+      integer :: i
+
+      log_d = log(d)
+      part_u = 0.0_wp
+      part_l = 0.0_wp
+      do i = 1, size(tail_u)
+         y = d*tail_u(i)
+         part_u = part_u + tail_uw(i)*(log(1.0_wp + sqrt(1.0_wp - y*y)) - log_d) &
+            *kernel(z, y*y)
+         y = d*tail_l(i)
+         part_l = part_l + tail_lw(i)*kernel(z, y*y)
+      end do
+      total = d*d*(part_u + part_l)
+   end function k_tail
+
+   !> 1/((1 - k^2 + k^2 y^2) sqrt(cos^2 s + sin^2 s y^2))
+   pure function kernel(z, y2) result(g)
+      type(md_zone), intent(in) :: z
+      real(wp), intent(in) :: y2
+      real(wp) :: g
+      g = 1.0_wp/((z%omk2 + z%k**2*y2)*sqrt(z%cs**2 + z%sn**2*y2))
+   end function kernel
+
+
+   ! ------------------------------------------------------------ geometry and states
+
+   !> A, q, the case-2 opening and the scan limits for one a*.
+   pure function geometry(a_star) result(geo)
+      real(wp), intent(in) :: a_star
+      type(md_geometry) :: geo
+      real(wp) :: tan_a
+      geo%a_star = a_star
+      geo%a = sin(pi*a_star)
+      geo%q = sin(pi*(0.5_wp - a_star))
+      geo%opening_top = top_opening(geo%a, geo%q)
+      tan_a = geo%a/geo%q
+      ! 1/2 - c* ~ 1/(pi tan(pi a*) R): below 0.01 and 0.02 (1/2 - a*) beyond x_mono,
+      ! below 2^-56 at x_top
+      geo%x_mono = log(max(50.0_wp, 32.0_wp/tan_a))
+      geo%x_top = min(x_limit, max(geo%x_mono + 1.0_wp, log(2.0_wp**56/(pi*tan_a))))
+   end function geometry
+
+   !> T = e^x, R, sin s, cos s, k = q sin s, 1 - k^2 = cos^2 s + A^2 sin^2 s, artanh k.
+   pure function zone_at(geo, x) result(z)
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      type(md_zone) :: z
+      z%t = exp(min(x, x_limit))
+      z%r = sqrt(1.0_wp + z%t**2)
+      z%sn = z%t/z%r
+      z%cs = 1.0_wp/z%r
+      z%k = geo%q*z%sn
+      z%omk2 = z%cs**2 + (geo%a*z%sn)**2
+      z%chi2 = artanh_of(z%k, z%omk2)
+   end function zone_at
+
+   !> c* - a* from x: tan(pi (c*-a*)) = A q T^2/(R+1) / (q^2 + A^2 R)
+   pure function gap_of_x(geo, x) result(gap)
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      real(wp) :: gap
+      type(md_zone) :: z
+      z = zone_at(geo, x)
+      gap = atan2(geo%a*geo%q*z%t*(z%t/(z%r + 1.0_wp)), geo%q**2 + geo%a**2*z%r)/pi
+      gap = min(gap, 0.5_wp - geo%a_star)
+   end function gap_of_x
+
+   !> x = ln T from c* - a*: R - 1 = sin(pi gap)/(A cos(pi c*)), T^2 = (R-1)(R+1).
+   pure function x_of_gap(geo, gap) result(x)
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: gap
+      real(wp) :: x
+      real(wp) :: rm1, cos_c
+      cos_c = sin(pi*((0.5_wp - geo%a_star) - gap))
+      if (gap <= 0.0_wp) then
+         x = -huge(x)
+      else if (cos_c <= 0.0_wp) then
+         x = x_limit
+      else
+         rm1 = sin(pi*gap)/(geo%a*cos_c)
+         x = 0.5_wp*(log(rm1) + log(rm1 + 2.0_wp))
+      end if
+   end function x_of_gap
+
+   !> 0 < a* < 1/2 and 0 <= gap <= 1/2 - a*.
+   pure logical function valid_zone(a_star, gap)
+      real(wp), intent(in) :: a_star, gap
+      valid_zone = a_star > 0.0_wp .and. a_star < 0.5_wp .and. gap >= 0.0_wp &
+         .and. gap <= 0.5_wp - a_star
+   end function valid_zone
+
+   !> Case-1 state at x: c* - a* from gap_of_x, P* from (2.27a).
+   pure function case1_state(params, geo, x) result(state)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      type(state_type) :: state
+      state%a_star = geo%a_star
+      state%gap_width = gap_of_x(geo, x)
+      state%c_star = min(0.5_wp, geo%a_star + state%gap_width)
+      state%p_star = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)   ! (2.27a)
+      state%zone_case = zone_inside
+   end function case1_state
+
+   !> c* = 1/2, P* = A^2 - Sigma0 (extension); at a* = 1/2 full contact at P* = 1 - Sigma0.
+   pure function case2_state(params, geo) result(state)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      type(state_type) :: state
+      state%a_star = geo%a_star
+      state%c_star = 0.5_wp
+      state%gap_width = 0.5_wp - geo%a_star
+      state%p_star = geo%a**2 - params%sigma0
+      state%zone_case = zone_whole_period
+      if (geo%a_star == 0.5_wp) state%zone_case = zone_full_contact
+   end function case2_state
+
+end module wa_md

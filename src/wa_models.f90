@@ -1,0 +1,136 @@
+!> One entry point per question for every model, selected by its integer constant
+!> (model_westergaard, model_jkr, model_dw, model_md): the principal equilibrium and all
+!> equilibria at a given a*. Westergaard and JKR have no cohesive zone: their single
+!> state has c* = a*, the closed-form load, zone case 1 (3 at a* = 1/2).
+!> Shared by the C interface, the Python facade and the command-line driver.
+module wa_models
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_capacity_too_small, set_error
+   use wa_validate, only: check_range
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_inside, zone_full_contact, model_westergaard, &
+      model_jkr, model_dw, model_md
+   use wa_kernels, only: westergaard_load, jkr_load
+   use wa_dw, only: dw_equilibrium, dw_roots
+   use wa_md, only: md_equilibrium, md_roots
+   implicit none
+   private
+
+   public :: check_model, model_equilibrium, model_roots
+
+contains
+
+   !> status = wa_ok if `model` is one of the four model constants, else
+   !> wa_invalid_argument with a message listing the valid values.
+   pure subroutine check_model(model, status, errmsg)
+      !> Model constant to check
+      integer, intent(in) :: model
+      !> wa_ok or wa_invalid_argument
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=12) :: text
+
+      select case (model)
+      case (model_westergaard, model_jkr, model_dw, model_md)
+         status = wa_ok
+      case default
+         write (text, '(i0)') model
+         call set_error(wa_invalid_argument, "model = "//trim(text)// &
+            " is not one of 0 (westergaard), 1 (jkr), 2 (dw), 3 (md)", status, errmsg)
+      end select
+   end subroutine check_model
+
+   !> Principal equilibrium of `model` at a* (SPEC section 4): for DW and MD the
+   !> case-1 state with the smallest c*, else the case-2 state.
+   pure subroutine model_equilibrium(model, params, a_star, state, status, errmsg)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
+      integer, intent(in) :: model
+      !> Validated parameters (new_params)
+      type(params_type), intent(in) :: params
+      !> Contact half-width over the period, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> The principal state
+      type(state_type), intent(out) :: state
+      !> wa_ok or the failure's status code
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+
+      call check_model(model, status, errmsg)
+      if (status /= wa_ok) return
+      select case (model)
+      case (model_dw)
+         call dw_equilibrium(params, a_star, state, status, errmsg)
+      case (model_md)
+         call md_equilibrium(params, a_star, state, status, errmsg)
+      case default
+         call closed_form_state(model, params, a_star, state, status, errmsg)
+      end select
+   end subroutine model_equilibrium
+
+   !> Every equilibrium of `model` at a* (one for Westergaard and JKR). n_roots is the
+   !> total; if it exceeds size(states), the first size(states) are stored and status
+   !> is wa_capacity_too_small.
+   pure subroutine model_roots(model, params, a_star, states, n_roots, status, errmsg)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
+      integer, intent(in) :: model
+      !> Validated parameters (new_params)
+      type(params_type), intent(in) :: params
+      !> Contact half-width over the period, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> Receives the states, by increasing c* (case 1), then case 2
+      type(state_type), intent(inout) :: states(:)
+      !> Number of equilibria found (may exceed size(states))
+      integer, intent(out) :: n_roots
+      !> wa_ok or the failure's status code
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: state
+
+      n_roots = 0
+      call check_model(model, status, errmsg)
+      if (status /= wa_ok) return
+      select case (model)
+      case (model_dw)
+         call dw_roots(params, a_star, states, n_roots, status, errmsg)
+      case (model_md)
+         call md_roots(params, a_star, states, n_roots, status, errmsg)
+      case default
+         call closed_form_state(model, params, a_star, state, status, errmsg)
+         if (status /= wa_ok) return
+         n_roots = 1
+         if (size(states) >= 1) then
+            states(1) = state
+         else
+            call set_error(wa_capacity_too_small, "states: capacity too small for all roots", &
+               status, errmsg)
+         end if
+      end select
+   end subroutine model_roots
+
+   !> Westergaard (3.1) or JKR (3.4) state: c* = a*, zone case 1, or 3 at a* = 1/2
+   !> (JKR: P* = -Infinity there, full contact never releases).
+   pure subroutine closed_form_state(model, params, a_star, state, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star
+      type(state_type), intent(out) :: state
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return
+      state%a_star = a_star
+      state%c_star = a_star
+      state%gap_width = 0.0_wp
+      if (model == model_jkr) then
+         state%p_star = jkr_load(params%alpha, a_star)
+      else
+         state%p_star = westergaard_load(a_star)
+      end if
+      state%zone_case = merge(zone_full_contact, zone_inside, a_star == 0.5_wp)
+   end subroutine closed_form_state
+
+end module wa_models
