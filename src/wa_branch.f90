@@ -381,8 +381,8 @@ contains
       end do
       fa = central5(fv, ha)
       pa = central5(pv, ha)
-      side = 1.0_wp
-      if (y + 2.0_wp*hy > curve_y_max(model)) side = -1.0_wp
+      side = 1.0_wp                                  ! the stencil stays below y_max
+      if (y + 4.0_wp*hy > curve_y_max(model)) side = -1.0_wp
       do k = 0, 4
          call values_at(a, y + side*k*hy, fv(k), pv(k))
       end do
@@ -454,8 +454,10 @@ contains
       real(wp), intent(in) :: h
       real(wp) :: a_next
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
+      ! F(a*, y_max) changes sign across the a* where the curve reaches y_max
       crosses_case2 = p%t(2) > 0.0_wp .and. &
-         curve_residual(model, params, a_next, curve_y_max(model)) <= 0.0_wp
+         curve_residual(model, params, a_next, curve_y_max(model)) &
+         *curve_residual(model, params, p%a, curve_y_max(model)) <= 0.0_wp
    end function crosses_case2
 
    !> Locate where the case-1 curve reaches y_max, push the switch event, go on in case 2.
@@ -470,10 +472,13 @@ contains
       real(wp) :: a_next, v_here, v_next, dir, slope_before
       type(curve_point) :: q
 
-      dir = sign(1.0_wp, p%t(1))
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
       v_here = curve_residual(model, params, p%a, curve_y_max(model))
       v_next = curve_residual(model, params, a_next, curve_y_max(model))
+      ! case 2 goes on to the side where it holds (F(a*, y_max) < 0): ahead for DW; for
+      ! MD it may lie behind, where the curve came from along its second case-1 root
+      dir = sign(1.0_wp, p%t(1))
+      if (v_here < 0.0_wp) dir = -dir
       q%a = switch_abscissa(model, params, p%a, v_here, a_next, v_next, status, errmsg)
       if (status /= wa_ok) return
       q%y = curve_y_max(model)

@@ -1,7 +1,11 @@
 !> The case-1 equilibrium curve of each cohesive model as the zero set of one residual
 !> F(a*, y) in the model's zone variable y, for the continuation driver (wa_branch).
 !>   DW: y = ln((C - A)/(1 - A)), y_max = 0 (c* = 1/2), F = dw_residual   (2.25b)
-!> Case 2 (c* = 1/2) holds where F(a*, y_max) < 0; its load is A^2 - Sigma0/2 (DW).
+!>   MD: y = ln((c* - a*)/(1/2 - a*)), y_max = 0, F = ln(opening/Dcod)   (2.27b)
+!> (each variable makes its curve cross y_max transversally: DW's residual is smooth in
+!> C, MD's opening in 1/2 - c*).
+!> Case 2 (c* = 1/2) holds where F(a*, y_max) < 0; its load is A^2 - Sigma0/2 (DW),
+!> A^2 - Sigma0 (MD, the extension of doc/theory.md).
 module wa_curve
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
@@ -11,6 +15,7 @@ module wa_curve
       model_md
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_residual, dw_state_at
+   use wa_md, only: md_roots, md_equilibrium, md_curve_residual, md_curve_state
    implicit none
    private
 
@@ -28,6 +33,8 @@ contains
       select case (model)
       case (model_dw)
          f = dw_residual(params, a_star, y)
+      case (model_md)
+         f = md_curve_residual(params, a_star, y)
       case default
          f = ieee_value(f, ieee_quiet_nan)
       end select
@@ -42,6 +49,8 @@ contains
       select case (model)
       case (model_dw)
          state = dw_state_at(params, a_star, y)
+      case (model_md)
+         state = md_curve_state(params, a_star, y)
       case default
          state%p_star = ieee_value(state%p_star, ieee_quiet_nan)
       end select
@@ -50,15 +59,13 @@ contains
    !> y where c* = 1/2.
    pure real(wp) function curve_y_max(model)
       integer, intent(in) :: model
-      curve_y_max = 0.0_wp
-      if (model == model_md) curve_y_max = 0.0_wp
+      curve_y_max = merge(0.0_wp, 0.0_wp, model == model_md)   ! both: c* = 1/2 at y = 0
    end function curve_y_max
 
    !> Scale of y in the arclength, so that a* and w y vary alike along the curve.
    pure real(wp) function curve_weight(model)
       integer, intent(in) :: model
       curve_weight = 0.02_wp
-      if (model == model_md) curve_weight = 0.02_wp
    end function curve_weight
 
    !> Case-2 load: DW A^2 - Sigma0/2 (2.28a); MD A^2 - Sigma0 (extension, doc/theory.md).
@@ -86,6 +93,8 @@ contains
       select case (model)
       case (model_dw)
          call dw_equilibrium(params, a_start, s, status, errmsg)
+      case (model_md)
+         call md_equilibrium(params, a_start, s, status, errmsg)
       case default
          call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
       end select
@@ -106,6 +115,8 @@ contains
       select case (model)
       case (model_dw)
          call dw_equilibrium(params, a_star, state, status, errmsg)
+      case (model_md)
+         call md_nearest(params, a_star, c_hint, state, status, errmsg)
       case (model_jkr, model_westergaard)           ! no cohesive zone: c* = a*
          status = wa_ok
          state%a_star = a_star
@@ -119,6 +130,20 @@ contains
       end select
    end subroutine curve_equilibrium
 
+   !> The MD state at a* whose c* is nearest c_hint.
+   pure subroutine md_nearest(params, a_star, c_hint, state, status, errmsg)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, c_hint
+      type(state_type), intent(out) :: state
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: states(4)
+      integer :: n
+      call md_roots(params, a_star, states, n, status, errmsg)
+      if (status /= wa_ok) return
+      state = states(minloc(abs(states(1:n)%c_star - c_hint), dim=1))
+   end subroutine md_nearest
+
    !> y of a case-1 state; C - A = 2 cos(pi (a*+c*)/2) sin(pi (c*-a*)/2) avoids cancellation.
    pure real(wp) function zone_variable(model, s)
       integer, intent(in) :: model
@@ -127,7 +152,7 @@ contains
       c_minus_a = 2.0_wp*cos(0.5_wp*pi*(s%a_star + s%c_star))*sin(0.5_wp*pi*s%gap_width)
       one_minus_a = 2.0_wp*sin(0.5_wp*pi*(0.5_wp - s%a_star))**2
       zone_variable = log(c_minus_a/one_minus_a)
-      if (model == model_md) zone_variable = log(c_minus_a/one_minus_a)
+      if (model == model_md) zone_variable = log(s%gap_width/(0.5_wp - s%a_star))
    end function zone_variable
 
 end module wa_curve

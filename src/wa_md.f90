@@ -46,6 +46,7 @@ module wa_md
    private
 
    public :: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, md_midgap_opening
+   public :: md_curve_residual, md_curve_state
 
    !> sin and cos of pi a*, the opening at c* = 1/2 and the scan range in x = ln tan s.
    type :: md_geometry
@@ -316,6 +317,58 @@ contains
       delta = top_opening(sin(pi*a_star), sin(pi*(0.5_wp - a_star)))
    end function md_midgap_opening
 
+
+   ! ------------------------------------------------- the curve for continuation
+
+   !> The case-1 residual for the continuation driver in v = ln((c* - a*)/(1/2 - a*))
+   !> (v -> 0: c* -> 1/2). The opening is smooth and has a non-zero slope in 1/2 - c* at the
+   !> top, so the curve meets v = 0 transversally (in x or in C it would touch it
+   !> tangentially), and v keeps the resolution of x for tiny zones:
+   !>   ln(opening/Dcod)  (< 0 below the root; at v = 0 it is < 0 exactly where case 2 holds).
+   pure function md_curve_residual(params, a_star, v) result(f)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, v
+      real(wp) :: f
+      real(wp) :: delta
+      type(md_geometry) :: geo
+      if (params%sigma0 == 0.0_wp) then             ! mu = 0: Westergaard, case 2 throughout
+         f = -1.0_wp
+         return
+      end if
+      geo = geometry(a_star)
+      delta = opening(params, geo, x_of_v(geo, v))
+      f = log(max(delta, tiny(delta))/params%dcod)
+   end function md_curve_residual
+
+   !> The case-1 state at (a*, v) (no solve).
+   pure function md_curve_state(params, a_star, v) result(state)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, v
+      type(state_type) :: state
+      type(md_geometry) :: geo
+      geo = geometry(a_star)
+      state = case1_state(params, geo, x_of_v(geo, v))
+   end function md_curve_state
+
+   !> x from v: c* - a* = (1/2 - a*) e^v, 1/2 - c* = -(1/2 - a*) expm1(v), then as x_of_gap.
+   pure function x_of_v(geo, v) result(x)
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: v
+      real(wp) :: x
+      real(wp) :: gap, top, rm1
+      if (v >= 0.0_wp) then
+         x = x_limit
+         return
+      end if
+      gap = (0.5_wp - geo%a_star)*exp(v)
+      if (v > -1.0e-5_wp) then                        ! 1 - e^v by its series
+         top = (0.5_wp - geo%a_star)*(-v)*(1.0_wp + v*(0.5_wp + v/6.0_wp))
+      else
+         top = (0.5_wp - geo%a_star)*(1.0_wp - exp(v))
+      end if
+      rm1 = sin(pi*gap)/(geo%a*sin(pi*top))
+      x = min(x_limit, 0.5_wp*(log(rm1) + log(rm1 + 2.0_wp)))
+   end function x_of_v
 
    ! ------------------------------------------------------------ the solver
 
