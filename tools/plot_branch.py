@@ -38,19 +38,25 @@ def main():
     a = [float(r["a_star"]) for r in branch]
     p = [float(r["P_star"]) for r in branch]
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for i in range(len(a) - 1):
-        stable = r_stable(branch, i)
-        case2 = branch[i]["zone_case"] != "1" and branch[i + 1]["zone_case"] != "1"
-        ax.plot(a[i:i + 2], p[i:i + 2], "-" if stable else "--",
-                color="tab:red" if not case2 else "tab:purple", lw=1.6)
+    # contiguous runs of one kind (stable or not, case 1 or 2) as single polylines
+    kinds = [(r_stable(branch, i), branch[i]["zone_case"] != "1" and branch[i + 1]["zone_case"] != "1")
+             for i in range(len(a) - 1)]
+    start = 0
+    for i in range(1, len(kinds) + 1):
+        if i == len(kinds) or kinds[i] != kinds[start]:
+            stable, case2 = kinds[start]
+            ax.plot(a[start:i + 1], p[start:i + 1], linestyle="-" if stable else (0, (4, 3)),
+                    color="tab:purple" if case2 else "tab:red", lw=1.6)
+            start = i
     for r in branch:
         if r["event"] in ("1", "2"):
             ax.plot(float(r["a_star"]), float(r["P_star"]), "o" if r["event"] == "1" else "s",
                     color="k", ms=4)
     pts = [(int(r["stage"]), int(r["event"]), float(r["a_star"]), float(r["P_star"])) for r in path]
     for (s0, e0, a0, p0), (s1, e1, a1, p1) in zip(pts, pts[1:]):
-        if s0 == s1 and e0 == 3 and p0 == p1 and abs(p0) != float("inf"):
-            ax.annotate("", xy=(a1, p1), xytext=(a0, p0),
+        if s0 == s1 and e0 == 3 and abs(p0) != float("inf"):
+            target = 0.0 if e1 == 7 else a1          # a pull-off jump leaves contact: to a* = 0
+            ax.annotate("", xy=(target, p1), xytext=(a0, p0),
                         arrowprops=dict(arrowstyle="->", color="tab:blue" if s0 == 1 else "tab:green"))
     ax.axhline(0.0, color="0.7", lw=0.8)
     ax.set_xlabel("a* = a/L")

@@ -22,6 +22,9 @@ contains
          new_unittest("paper_alpha03_mu5_snaps", test_paper_mu5), &
          new_unittest("small_mu_only_jump_in", test_small_mu), &
          new_unittest("jkr_full_contact_facts", test_jkr), &
+         new_unittest("fold_matches_dense_scan", test_fold_scan), &
+         new_unittest("md_branch_points_are_equilibria", test_md_points), &
+         new_unittest("md_branch_folds_back_and_switches", test_md_shape), &
          new_unittest("invalid_model", test_invalid)]
    end subroutine collect_branch
 
@@ -194,6 +197,70 @@ contains
       end do
       jkr_max = jkr_load(alpha, 0.5_wp*(lo + hi))
    end function jkr_max
+
+   !> The maximum fold of alpha 0.3, mu 5 agrees with the largest P* of a dense scan of
+   !> the point solver (2001 points over +-1e-4) to the scan's spacing.
+   subroutine test_fold_scan(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      type(state_type) :: s
+      real(wp) :: a_fold, a, best_a, best_p
+      integer :: i, status
+      b = traced(0.3_wp, 5.0_wp)
+      a_fold = -1
+      do i = 1, b%n
+         if (b%event(i) == event_fold .and. b%extremum(i) == 1) a_fold = b%a_star(i)
+      end do
+      call check(error, a_fold > 0, "no maximum fold")
+      if (allocated(error)) return
+      best_p = -huge(1.0_wp)
+      best_a = 0
+      do i = -1000, 1000
+         a = a_fold + 1.0e-7_wp*i
+         call dw_equilibrium(params_of(0.3_wp, 5.0_wp), a, s, status)
+         if (s%p_star > best_p) then
+            best_p = s%p_star; best_a = a
+         end if
+      end do
+      call check(error, abs(best_a - a_fold) <= 1.0e-7_wp, "fold far from the scan's maximum")
+   end subroutine test_fold_scan
+
+   !> Every case-1 point of an MD branch is one of md_roots' states at its a*, to 1e-12.
+   subroutine test_md_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      type(state_type) :: states(4)
+      integer :: i, n, status
+      call trace_branch(model_md, params_of(0.3_wp, 1.0_wp), b, status)
+      call check(error, status == wa_ok .and. b%n > 50, "md trace failed")
+      if (allocated(error)) return
+      do i = 1, b%n
+         if (b%zone_case(i) /= zone_inside .or. b%event(i) /= event_none) cycle
+         call md_roots(params_of(0.3_wp, 1.0_wp), b%a_star(i), states, n, status)
+         call check(error, status == wa_ok, "md_roots status")
+         call check(error, minval(abs(states(1:n)%c_star - b%c_star(i))) <= 1.0e-12_wp &
+            *b%c_star(i), "branch point is not an MD equilibrium")
+         if (allocated(error)) return
+      end do
+   end subroutine test_md_points
+
+   !> MD alpha 0.3, mu 1 (MODEL-NOTES: the curve folds back in a*): a* decreases somewhere
+   !> along the case-1 curve, which ends on c* = 1/2 at a corner minimum.
+   subroutine test_md_shape(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      integer :: i, status, k
+      call trace_branch(model_md, params_of(0.3_wp, 1.0_wp), b, status)
+      call check(error, any(b%a_star(2:b%n) < b%a_star(1:b%n - 1)), "no fold back in a*")
+      k = 0
+      do i = 1, b%n
+         if (b%event(i) == event_switch) k = i
+      end do
+      call check(error, k > 0, "no case switch")
+      if (allocated(error)) return
+      call check(error, b%extremum(k) == -1, "the switch is not a corner minimum")
+      call check(error, b%zone_case(b%n) == zone_full_contact, "branch does not end at a* = 1/2")
+   end subroutine test_md_shape
 
    subroutine test_invalid(error)
       type(error_type), allocatable, intent(out) :: error
