@@ -13,7 +13,7 @@ module wa_branch
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, wa_numerical_error, &
       set_error
-   use wa_params, only: params_type
+   use wa_params, only: params_type, check_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
@@ -82,6 +82,8 @@ contains
 
       if (present(options)) opts = options
       call reserve(branch, 256)
+      call check_params(params, status, errmsg)
+      if (status /= wa_ok) return
       select case (model)
       case (model_westergaard, model_jkr)
          call closed_form_branch(model, params, opts, branch, status)

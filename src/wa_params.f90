@@ -8,7 +8,7 @@ module wa_params
    implicit none
    private
 
-   public :: params_type, new_params, dimensional_params, reduced_modulus
+   public :: params_type, new_params, check_params, dimensional_params, reduced_modulus
    public :: scales_type
 
    !> Dimensionless model parameters.
@@ -60,6 +60,15 @@ contains
          params%dcod = ieee_value(params%dcod, ieee_positive_inf)
       end if
    end subroutine new_params
+
+   !> Re-validate a params_type (it may have been filled by hand): the checks of new_params.
+   pure subroutine check_params(params, status, errmsg)
+      type(params_type), intent(in) :: params
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(params_type) :: fresh
+      call new_params(params%alpha, params%mu, fresh, status, errmsg)
+   end subroutine check_params
 
    !> Reduced modulus 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2   (2.2b)
    pure subroutine reduced_modulus(e1, nu1, e2, nu2, estar, status, errmsg)

@@ -270,6 +270,17 @@ contains
       msg = ""
       call trace_branch(7, params_of(0.3_wp, 1.0_wp), b, status, msg)
       call check(error, status == wa_invalid_argument .and. index(msg, "model") > 0, trim(msg))
+      block
+         type(params_type) :: bad
+         type(path_type) :: path
+         bad%alpha = -1.0_wp
+         bad%mu = 1.0_wp
+         msg = ""
+         call trace_branch(model_dw, bad, b, status, msg)
+         call check(error, status == wa_invalid_argument .and. index(msg, "alpha") > 0, trim(msg))
+         call load_path(model_md, bad, path, status)
+         call check(error, status == wa_invalid_argument, "load_path: bad alpha accepted")
+      end block
    end subroutine test_invalid
 
 end module test_branch
