@@ -40,6 +40,28 @@ extern "C" {
 #define WA_ZONE_WHOLE_PERIOD 2  /* a* < c* = 1/2 */
 #define WA_ZONE_FULL_CONTACT 3  /* a* = c* = 1/2 */
 
+/* Event codes of branch points and load-path events (event_* in the Fortran module
+   wa_branch; the same codes as the command line's `event` column). */
+#define WA_EVENT_NONE 0                 /* an ordinary point */
+#define WA_EVENT_FOLD 1                 /* a fold: d(P*)/d(a*) = 0 */
+#define WA_EVENT_SWITCH 2               /* a zone-case switch: c* reaches or leaves 1/2 */
+#define WA_EVENT_JUMP_START 3           /* a jump at constant load starts here */
+#define WA_EVENT_JUMP_END 4             /* ... and lands here */
+#define WA_EVENT_FULL_CONTACT_REACHED 5 /* full contact reached (load P_fc*) */
+#define WA_EVENT_FULL_CONTACT_LEFT 6    /* full contact left on unloading */
+#define WA_EVENT_PULL_OFF 7             /* contact lost (load P_pf*) */
+#define WA_EVENT_BRANCH_END 8           /* first and last point of a branch */
+
+/* Stages of a load path (stage_loading, stage_unloading in wa_loadpath). */
+#define WA_STAGE_LOADING 1      /* from separation at P* = 0 up to full contact */
+#define WA_STAGE_UNLOADING 2    /* from full contact down to pull-off */
+
+/* How full contact is reached / contact is lost (mechanism_* in wa_loadpath). */
+#define WA_MECHANISM_GRADUAL 0    /* along a stable piece of the branch, no jump */
+#define WA_MECHANISM_JUMP_CASE1 1 /* a jump leaving a zone-case-1 state (a fold) */
+#define WA_MECHANISM_JUMP_CASE2 2 /* a jump leaving a zone-case-2 state (c* = 1/2) */
+#define WA_MECHANISM_SNAP 3       /* full contact only: snap from separation at P* = 0 */
+
 /* Westergaard load P* = sin^2(pi a*); NaN when a_star is outside [0, 1/2] or NaN. */
 double wa_westergaard_load(double a_star);
 
@@ -71,6 +93,63 @@ int wa_roots(int model, double alpha, double mu, double a_star, int capacity,
 int wa_roots_msg(int model, double alpha, double mu, double a_star, int capacity,
                  double *c_star, double *P_star, int *zone_case, int *n_roots,
                  char *message, int message_capacity);
+
+/* The equilibrium branch P*(a*), c*(a*) of `model` over 0 < a* <= 1/2, traced by
+   pseudo-arclength continuation (DW, MD) or sampled from the closed form (Westergaard,
+   JKR), in the order of the curve (not necessarily of a*), with every fold and zone-case
+   switch as a point of its own (event[] = WA_EVENT_FOLD, WA_EVENT_SWITCH; the first and
+   last points are WA_EVENT_BRANCH_END). stable[] is 1 where d(P*)/d(a*) > 0 (stable under
+   load control), 0 elsewhere and at folds. *n_points receives the number of points. When
+   it exceeds `capacity` the first `capacity` points are written, nothing beyond, and
+   WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays asks for the count; the
+   branch is traced either way, so allocate generously: a few hundred points are usual).
+   On any other failure *n_points = 0. */
+int wa_trace_branch(int model, double alpha, double mu, int capacity,
+                    double *a_star, double *c_star, double *P_star, int *zone_case,
+                    int *stable, int *event, int *n_points);
+
+/* As wa_trace_branch, with the message of wa_equilibrium_msg. */
+int wa_trace_branch_msg(int model, double alpha, double mu, int capacity,
+                        double *a_star, double *c_star, double *P_star, int *zone_case,
+                        int *stable, int *event, int *n_points,
+                        char *message, int message_capacity);
+
+/* Critical forces under load control: *P_fc receives the load at which full contact is
+   first reached on loading from separation at P* = 0, *P_pf the pull-off load on
+   unloading from full contact (JKR: -INFINITY, full contact never releases). On failure
+   both are NaN. */
+int wa_critical_forces(int model, double alpha, double mu, double *P_fc, double *P_pf);
+
+/* As wa_critical_forces, with the message of wa_equilibrium_msg. */
+int wa_critical_forces_msg(int model, double alpha, double mu, double *P_fc, double *P_pf,
+                           char *message, int message_capacity);
+
+/* The events of load-controlled loading (stage WA_STAGE_LOADING: jump-in at P* = 0,
+   jumps, full contact reached) and unloading (WA_STAGE_UNLOADING: full contact left,
+   jumps, pull-off), in order, with *P_fc and *P_pf as wa_critical_forces gives them.
+   *n_events receives the number of events (at most 64). When it exceeds `capacity` the
+   first `capacity` events are written, *P_fc and *P_pf too, and WA_CAPACITY_TOO_SMALL
+   is returned. On any other failure *n_events = 0 and *P_fc = *P_pf = NaN. */
+int wa_load_path(int model, double alpha, double mu, int capacity,
+                 int *stage, int *event, double *a_star, double *c_star, double *P_star,
+                 int *n_events, double *P_fc, double *P_pf);
+
+/* As wa_load_path, with the message of wa_equilibrium_msg. */
+int wa_load_path_msg(int model, double alpha, double mu, int capacity,
+                     int *stage, int *event, double *a_star, double *c_star,
+                     double *P_star, int *n_events, double *P_fc, double *P_pf,
+                     char *message, int message_capacity);
+
+/* P_fc*, P_pf* and their mechanisms (WA_MECHANISM_*) for one alpha and n_mu values of
+   mu (the arrays have n_mu elements; they may be NULL when n_mu is 0). Every mu is
+   validated before any work; on failure every output is NaN (mechanisms -1). */
+int wa_critical_sweep(int model, double alpha, int n_mu, const double *mu,
+                      double *P_fc, double *P_pf, int *fc_mechanism, int *pf_mechanism);
+
+/* As wa_critical_sweep, with the message of wa_equilibrium_msg. */
+int wa_critical_sweep_msg(int model, double alpha, int n_mu, const double *mu,
+                          double *P_fc, double *P_pf, int *fc_mechanism, int *pf_mechanism,
+                          char *message, int message_capacity);
 
 /* Short fixed text of a status code: a static NUL-terminated string, never NULL
    ("unknown status" for codes the library does not return). Do not free it. */

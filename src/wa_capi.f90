@@ -17,11 +17,16 @@ module wa_capi
    use wa_state, only: state_type
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_models, only: check_model, model_equilibrium, model_roots
+   use wa_branch, only: branch_type, trace_branch
+   use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
    implicit none
    private
 
    public :: capi_westergaard_load, capi_jkr_load, capi_equilibrium, capi_equilibrium_msg, &
       capi_roots, capi_roots_msg, capi_status_message
+   public :: capi_trace_branch, capi_trace_branch_msg, capi_critical_forces, &
+      capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
+      capi_critical_sweep_msg
 
    !> Length of one status text, NUL included.
    integer, parameter :: text_len = 32
@@ -181,6 +186,261 @@ contains
       call copy_message(msg, message, message_capacity)
    end function capi_roots_msg
 
+   !> int wa_trace_branch(model, alpha, mu, capacity, a_star[], c_star[], P_star[],
+   !> zone_case[], stable[], event[], *n_points): the equilibrium branch by continuation
+   !> (trace_branch), in the order of the curve. *n_points is the number of points; when
+   !> it exceeds `capacity` the first `capacity` points are written and the status is
+   !> WA_CAPACITY_TOO_SMALL. On any other failure *n_points = 0.
+   function capi_trace_branch(model, alpha, mu, capacity, a_star, c_star, p_star, &
+         zone_case, stable, event, n_points) result(status) bind(C, name="wa_trace_branch")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the six arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives a* of each point
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each point
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each point
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each point
+      type(c_ptr), value, intent(in) :: zone_case
+      !> int[capacity]: receives 1 where dP*/da* > 0 (stable under load control), else 0
+      type(c_ptr), value, intent(in) :: stable
+      !> int[capacity]: receives the event code of each point (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> int *: receives the number of points
+      type(c_ptr), value, intent(in) :: n_points
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star], &
+         [zone_case, stable, event], n_points, status, msg)
+   end function capi_trace_branch
+
+   !> int wa_trace_branch_msg(..., char *message, int message_capacity): as
+   !> wa_trace_branch, with the message of wa_equilibrium_msg.
+   function capi_trace_branch_msg(model, alpha, mu, capacity, a_star, c_star, p_star, &
+         zone_case, stable, event, n_points, message, message_capacity) result(status) &
+         bind(C, name="wa_trace_branch_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the six arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives a* of each point
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each point
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each point
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each point
+      type(c_ptr), value, intent(in) :: zone_case
+      !> int[capacity]: receives 1 where dP*/da* > 0 (stable under load control), else 0
+      type(c_ptr), value, intent(in) :: stable
+      !> int[capacity]: receives the event code of each point (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> int *: receives the number of points
+      type(c_ptr), value, intent(in) :: n_points
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star], &
+         [zone_case, stable, event], n_points, status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_trace_branch_msg
+
+   !> int wa_critical_forces(model, alpha, mu, *P_fc, *P_pf): the load at which full
+   !> contact is first reached on loading from P* = 0 and the pull-off load on unloading
+   !> from full contact (JKR: -Infinity). On failure *P_fc = *P_pf = NaN.
+   function capi_critical_forces(model, alpha, mu, p_fc, p_pf) result(status) &
+         bind(C, name="wa_critical_forces")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> double *: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double *: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call critical_core(model, alpha, mu, p_fc, p_pf, status, msg)
+   end function capi_critical_forces
+
+   !> int wa_critical_forces_msg(..., char *message, int message_capacity): as
+   !> wa_critical_forces, with the message of wa_equilibrium_msg.
+   function capi_critical_forces_msg(model, alpha, mu, p_fc, p_pf, message, &
+         message_capacity) result(status) bind(C, name="wa_critical_forces_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> double *: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double *: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call critical_core(model, alpha, mu, p_fc, p_pf, status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_critical_forces_msg
+
+   !> int wa_load_path(model, alpha, mu, capacity, stage[], event[], a_star[], c_star[],
+   !> P_star[], *n_events, *P_fc, *P_pf): the events of load-controlled loading (stage 1)
+   !> and unloading (stage 2), with P_fc* and P_pf*. *n_events is the number of events;
+   !> when it exceeds `capacity` the first `capacity` are written (P_fc, P_pf too) and
+   !> the status is WA_CAPACITY_TOO_SMALL. On any other failure *n_events = 0 and
+   !> *P_fc = *P_pf = NaN.
+   function capi_load_path(model, alpha, mu, capacity, stage, event, a_star, c_star, &
+         p_star, n_events, p_fc, p_pf) result(status) bind(C, name="wa_load_path")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the five arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> int[capacity]: receives the stage of each event (WA_STAGE_*)
+      type(c_ptr), value, intent(in) :: stage
+      !> int[capacity]: receives the event code (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> double[capacity]: receives a* of each event
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each event
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each event
+      type(c_ptr), value, intent(in) :: p_star
+      !> int *: receives the number of events
+      type(c_ptr), value, intent(in) :: n_events
+      !> double *: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double *: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call path_core(model, alpha, mu, capacity, [stage, event], [a_star, c_star, p_star], &
+         n_events, p_fc, p_pf, status, msg)
+   end function capi_load_path
+
+   !> int wa_load_path_msg(..., char *message, int message_capacity): as wa_load_path,
+   !> with the message of wa_equilibrium_msg.
+   function capi_load_path_msg(model, alpha, mu, capacity, stage, event, a_star, c_star, &
+         p_star, n_events, p_fc, p_pf, message, message_capacity) result(status) &
+         bind(C, name="wa_load_path_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the five arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> int[capacity]: receives the stage of each event (WA_STAGE_*)
+      type(c_ptr), value, intent(in) :: stage
+      !> int[capacity]: receives the event code (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> double[capacity]: receives a* of each event
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each event
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each event
+      type(c_ptr), value, intent(in) :: p_star
+      !> int *: receives the number of events
+      type(c_ptr), value, intent(in) :: n_events
+      !> double *: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double *: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call path_core(model, alpha, mu, capacity, [stage, event], [a_star, c_star, p_star], &
+         n_events, p_fc, p_pf, status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_load_path_msg
+
+   !> int wa_critical_sweep(model, alpha, n_mu, mu[], P_fc[], P_pf[], fc_mechanism[],
+   !> pf_mechanism[]): P_fc*, P_pf* and how each is reached (WA_MECHANISM_*) for one
+   !> alpha over n_mu values of mu. Every mu is validated before any work; on failure
+   !> every output is NaN (mechanisms -1).
+   function capi_critical_sweep(model, alpha, n_mu, mu, p_fc, p_pf, fc_mechanism, &
+         pf_mechanism) result(status) bind(C, name="wa_critical_sweep")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Number of mu values, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: n_mu
+      !> const double[n_mu]: transition parameters, each >= 0
+      type(c_ptr), value, intent(in) :: mu
+      !> double[n_mu]: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double[n_mu]: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      !> int[n_mu]: receives how full contact is reached
+      type(c_ptr), value, intent(in) :: fc_mechanism
+      !> int[n_mu]: receives how contact is lost
+      type(c_ptr), value, intent(in) :: pf_mechanism
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
+         status, msg)
+   end function capi_critical_sweep
+
+   !> int wa_critical_sweep_msg(..., char *message, int message_capacity): as
+   !> wa_critical_sweep, with the message of wa_equilibrium_msg.
+   function capi_critical_sweep_msg(model, alpha, n_mu, mu, p_fc, p_pf, fc_mechanism, &
+         pf_mechanism, message, message_capacity) result(status) &
+         bind(C, name="wa_critical_sweep_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Number of mu values, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: n_mu
+      !> const double[n_mu]: transition parameters, each >= 0
+      type(c_ptr), value, intent(in) :: mu
+      !> double[n_mu]: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double[n_mu]: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      !> int[n_mu]: receives how full contact is reached
+      type(c_ptr), value, intent(in) :: fc_mechanism
+      !> int[n_mu]: receives how contact is lost
+      type(c_ptr), value, intent(in) :: pf_mechanism
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
+         status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_critical_sweep_msg
+
    !> const char *wa_status_message(int status): a static NUL-terminated text, never
    !> NULL ("unknown status" for codes the library does not return).
    function capi_status_message(status) result(text) bind(C, name="wa_status_message")
@@ -318,6 +578,263 @@ contains
          z_out(k) = int(states(k)%zone_case, c_int)
       end do
    end subroutine store_states
+
+   !> Validate, trace, write min(n, capacity) points and n (0 on failures other than a
+   !> too small capacity). reals = [a_star, c_star, P_star], ints = [zone_case, stable,
+   !> event].
+   subroutine branch_core(model, alpha, mu, capacity, reals, ints, n_points, status, msg)
+      integer(c_int), intent(in) :: model, capacity
+      real(c_double), intent(in) :: alpha, mu
+      type(c_ptr), intent(in) :: reals(3), ints(3), n_points
+      integer(c_int), intent(out) :: status
+      character(len=*), intent(out) :: msg
+      integer(c_int), pointer :: n_out
+      type(params_type) :: params
+      type(branch_type) :: branch
+      integer :: stat, m
+
+      msg = ""
+      call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
+         "a_star, c_star, P_star, zone_case, stable and event", stat, msg)
+      if (stat /= wa_ok) then
+         status = int(stat, c_int)
+         return
+      end if
+      call c_f_pointer(n_points, n_out)
+      n_out = 0
+      call check_model(int(model), stat, msg)
+      if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
+      if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, msg)
+      if (stat == wa_ok) then
+         m = min(branch%n, int(capacity))
+         call store_reals(reals(1), branch%a_star(1:m))
+         call store_reals(reals(2), branch%c_star(1:m))
+         call store_reals(reals(3), branch%p_star(1:m))
+         call store_ints(ints(1), branch%zone_case(1:m))
+         call store_ints(ints(2), merge(1, 0, branch%stable(1:m)))
+         call store_ints(ints(3), branch%event(1:m))
+         n_out = int(branch%n, c_int)
+         if (branch%n > capacity) call too_small("the branch has", "points", branch%n, &
+            capacity, stat, msg)
+      end if
+      status = int(stat, c_int)
+   end subroutine branch_core
+
+   !> Validate, compute P_fc* and P_pf* (NaN on failure).
+   subroutine critical_core(model, alpha, mu, p_fc, p_pf, status, msg)
+      integer(c_int), intent(in) :: model
+      real(c_double), intent(in) :: alpha, mu
+      type(c_ptr), intent(in) :: p_fc, p_pf
+      integer(c_int), intent(out) :: status
+      character(len=*), intent(out) :: msg
+      real(c_double), pointer :: fc_out, pf_out
+      type(params_type) :: params
+      real(c_double) :: fc, pf
+      integer :: stat
+
+      msg = ""
+      if (.not. (c_associated(p_fc) .and. c_associated(p_pf))) then
+         call set_error(wa_invalid_argument, "P_fc and P_pf must not be NULL", stat, msg)
+         status = int(stat, c_int)
+         return
+      end if
+      call c_f_pointer(p_fc, fc_out)
+      call c_f_pointer(p_pf, pf_out)
+      fc_out = ieee_value(fc_out, ieee_quiet_nan)
+      pf_out = fc_out
+      call check_model(int(model), stat, msg)
+      if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
+      if (stat == wa_ok) call critical_forces(int(model), params, fc, pf, stat, msg)
+      if (stat == wa_ok) then
+         fc_out = fc
+         pf_out = pf
+      end if
+      status = int(stat, c_int)
+   end subroutine critical_core
+
+   !> Validate, follow the load path, write min(n, capacity) events, n, P_fc*, P_pf*.
+   !> ints = [stage, event], reals = [a_star, c_star, P_star].
+   subroutine path_core(model, alpha, mu, capacity, ints, reals, n_events, p_fc, p_pf, &
+         status, msg)
+      integer(c_int), intent(in) :: model, capacity
+      real(c_double), intent(in) :: alpha, mu
+      type(c_ptr), intent(in) :: ints(2), reals(3), n_events, p_fc, p_pf
+      integer(c_int), intent(out) :: status
+      character(len=*), intent(out) :: msg
+      integer(c_int), pointer :: n_out
+      real(c_double), pointer :: fc_out, pf_out
+      type(params_type) :: params
+      type(path_type) :: path
+      integer :: stat, m
+
+      msg = ""
+      call check_outputs("n_events", n_events, "capacity", capacity, [ints, reals], &
+         "stage, event, a_star, c_star and P_star", stat, msg)
+      if (stat == wa_ok .and. .not. (c_associated(p_fc) .and. c_associated(p_pf))) &
+         call set_error(wa_invalid_argument, "P_fc and P_pf must not be NULL", stat, msg)
+      if (stat /= wa_ok) then
+         status = int(stat, c_int)
+         return
+      end if
+      call c_f_pointer(n_events, n_out)
+      call c_f_pointer(p_fc, fc_out)
+      call c_f_pointer(p_pf, pf_out)
+      n_out = 0
+      fc_out = ieee_value(fc_out, ieee_quiet_nan)
+      pf_out = fc_out
+      call check_model(int(model), stat, msg)
+      if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
+      if (stat == wa_ok) call load_path(int(model), params, path, stat, msg)
+      if (stat == wa_ok) then
+         m = min(path%n, int(capacity))
+         call store_ints(ints(1), path%stage(1:m))
+         call store_ints(ints(2), path%event(1:m))
+         call store_reals(reals(1), path%a_star(1:m))
+         call store_reals(reals(2), path%c_star(1:m))
+         call store_reals(reals(3), path%p_star(1:m))
+         n_out = int(path%n, c_int)
+         fc_out = path%p_fc
+         pf_out = path%p_pf
+         if (path%n > capacity) call too_small("the load path has", "events", path%n, &
+            capacity, stat, msg)
+      end if
+      status = int(stat, c_int)
+   end subroutine path_core
+
+   !> Validate everything (every mu first), sweep, write the four arrays (NaN and -1
+   !> everywhere on failure). reals = [P_fc, P_pf], ints = [fc_mechanism, pf_mechanism].
+   subroutine sweep_core(model, alpha, n_mu, mu, reals, ints, status, msg)
+      integer(c_int), intent(in) :: model, n_mu
+      real(c_double), intent(in) :: alpha
+      type(c_ptr), intent(in) :: mu, reals(2), ints(2)
+      integer(c_int), intent(out) :: status
+      character(len=*), intent(out) :: msg
+      real(c_double), pointer :: mu_in(:), fc_out(:), pf_out(:)
+      integer(c_int), pointer :: fcm_out(:), pfm_out(:)
+      real(c_double), allocatable :: p_fc(:), p_pf(:)
+      integer, allocatable :: fc_mech(:), pf_mech(:)
+      type(params_type) :: params
+      integer :: stat, i
+      character(len=12) :: text
+
+      msg = ""
+      call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints], &
+         "mu, P_fc, P_pf, fc_mechanism and pf_mechanism", stat, msg)
+      if (stat /= wa_ok) then
+         status = int(stat, c_int)
+         return
+      end if
+      call check_model(int(model), stat, msg)
+      if (stat == wa_ok) call new_params(alpha, 0.0_c_double, params, stat, msg)
+      if (n_mu == 0) then                     ! nothing to compute; model and alpha checked
+         status = int(stat, c_int)
+         return
+      end if
+      call c_f_pointer(mu, mu_in, [n_mu])
+      call c_f_pointer(reals(1), fc_out, [n_mu])
+      call c_f_pointer(reals(2), pf_out, [n_mu])
+      call c_f_pointer(ints(1), fcm_out, [n_mu])
+      call c_f_pointer(ints(2), pfm_out, [n_mu])
+      fc_out = ieee_value(1.0_c_double, ieee_quiet_nan)
+      pf_out = fc_out
+      fcm_out = -1
+      pfm_out = -1
+      do i = 1, int(n_mu)
+         if (stat /= wa_ok) exit
+         call new_params(alpha, mu_in(i), params, stat, msg)
+         if (stat /= wa_ok) then
+            write (text, '(i0)') i - 1
+            msg = trim(msg)//" (mu["//trim(text)//"])"
+         end if
+      end do
+      if (stat == wa_ok) then
+         allocate (p_fc(n_mu), p_pf(n_mu), fc_mech(n_mu), pf_mech(n_mu))
+         call critical_sweep(int(model), alpha, mu_in, p_fc, p_pf, fc_mech, pf_mech, stat, msg)
+         if (stat == wa_ok) then
+            fc_out = p_fc
+            pf_out = p_pf
+            fcm_out = int(fc_mech, c_int)
+            pfm_out = int(pf_mech, c_int)
+         end if
+      end if
+      status = int(stat, c_int)
+   end subroutine sweep_core
+
+   !> The count pointer must not be NULL (when count_name is not empty); the size >= 0;
+   !> the arrays not NULL unless the size is 0.
+   subroutine check_outputs(count_name, count_ptr, size_name, capacity, arrays, array_names, &
+         stat, msg)
+      !> Name of the count pointer ("" when there is none)
+      character(len=*), intent(in) :: count_name
+      type(c_ptr), intent(in) :: count_ptr
+      !> Name of the size argument ("capacity", "n_mu")
+      character(len=*), intent(in) :: size_name
+      integer(c_int), intent(in) :: capacity
+      type(c_ptr), intent(in) :: arrays(:)
+      !> Names of the arrays, for the message
+      character(len=*), intent(in) :: array_names
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: msg
+      character(len=12) :: text
+      integer :: k
+
+      stat = wa_ok
+      if (len(count_name) > 0) then
+         if (.not. c_associated(count_ptr)) then
+            call set_error(wa_invalid_argument, count_name//" must not be NULL", stat, msg)
+            return
+         end if
+      end if
+      if (capacity < 0) then
+         write (text, '(i0)') capacity
+         call set_error(wa_invalid_argument, size_name//" = "//trim(text)// &
+            " is outside its valid range [0, inf)", stat, msg)
+         return
+      end if
+      if (capacity == 0) return
+      do k = 1, size(arrays)
+         if (.not. c_associated(arrays(k))) then
+            call set_error(wa_invalid_argument, array_names//" must not be NULL when "// &
+               size_name//" > 0", stat, msg)
+            return
+         end if
+      end do
+   end subroutine check_outputs
+
+   !> WA_CAPACITY_TOO_SMALL with a message giving both sizes.
+   subroutine too_small(what, items, n, capacity, stat, msg)
+      character(len=*), intent(in) :: what, items
+      integer, intent(in) :: n
+      integer(c_int), intent(in) :: capacity
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: msg
+      character(len=12) :: t_n, t_cap
+      write (t_n, '(i0)') n
+      write (t_cap, '(i0)') capacity
+      call set_error(wa_capacity_too_small, "capacity = "//trim(t_cap)//" is too small: "// &
+         what//" "//trim(t_n)//" "//items//" (the first "//trim(t_cap)//" were written)", &
+         stat, msg)
+   end subroutine too_small
+
+   !> Copy values into a caller's double array (nothing when there are none).
+   subroutine store_reals(ptr, values)
+      type(c_ptr), intent(in) :: ptr
+      real(c_double), intent(in) :: values(:)
+      real(c_double), pointer :: out(:)
+      if (size(values) == 0) return
+      call c_f_pointer(ptr, out, [size(values)])
+      out = values
+   end subroutine store_reals
+
+   !> Copy values into a caller's int array (nothing when there are none).
+   subroutine store_ints(ptr, values)
+      type(c_ptr), intent(in) :: ptr
+      integer, intent(in) :: values(:)
+      integer(c_int), pointer :: out(:)
+      if (size(values) == 0) return
+      call c_f_pointer(ptr, out, [size(values)])
+      out = int(values, c_int)
+   end subroutine store_ints
 
    !> Copy msg (trailing blanks dropped), truncated to capacity - 1 bytes plus a NUL,
    !> into a C buffer; nothing when the buffer is NULL or capacity <= 0.

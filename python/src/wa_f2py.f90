@@ -355,3 +355,217 @@ subroutine fa_dimensional(estar, period, amplitude, work_of_adhesion, peak_stres
    radius = scales%radius
    status = int(stat, c_int)
 end subroutine fa_dimensional
+
+!> The equilibrium branch of `model` by continuation: the first min(n_points, capacity)
+!> points, in the order of the curve; status 4 (capacity too small) when n_points >
+!> capacity (call again with capacity >= n_points). On other failures n_points = 0.
+subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b_star, &
+      zone_case, stable, event, extremum, n_points, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_branch, only: branch_type, trace_branch
+   implicit none
+   !> Length of the output arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> a* of each point
+   real(c_double), intent(out) :: a_star(capacity)
+   !> c* of each point
+   real(c_double), intent(out) :: c_star(capacity)
+   !> P* of each point
+   real(c_double), intent(out) :: p_star(capacity)
+   !> b* = a* + 0.4 (c* - a*) of each point (the command line's b_star column)
+   real(c_double), intent(out) :: b_star(capacity)
+   !> Zone case of each point
+   integer(c_int), intent(out) :: zone_case(capacity)
+   !> 1 where dP*/da* > 0 (stable under load control), else 0
+   integer(c_int), intent(out) :: stable(capacity)
+   !> Event code of each point (0 none, 1 fold, 2 zone-case switch, 8 branch end)
+   integer(c_int), intent(out) :: event(capacity)
+   !> +1 local maximum of P* along the curve, -1 local minimum, 0 otherwise
+   integer(c_int), intent(out) :: extremum(capacity)
+   !> Number of points (may exceed capacity)
+   integer(c_int), intent(out) :: n_points
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(branch_type) :: branch
+   integer :: m, stat
+
+   message = ""
+   a_star = 0.0_c_double; c_star = 0.0_c_double; p_star = 0.0_c_double
+   b_star = 0.0_c_double; zone_case = 0; stable = 0; event = 0; extremum = 0
+   n_points = 0
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, message)
+   if (stat == wa_ok) then
+      m = min(branch%n, int(capacity))
+      a_star(1:m) = branch%a_star(1:m)
+      c_star(1:m) = branch%c_star(1:m)
+      p_star(1:m) = branch%p_star(1:m)
+      b_star(1:m) = branch%a_star(1:m) + 0.4_c_double*(branch%c_star(1:m) - branch%a_star(1:m))
+      zone_case(1:m) = int(branch%zone_case(1:m), c_int)
+      stable(1:m) = merge(1_c_int, 0_c_int, branch%stable(1:m))
+      event(1:m) = int(branch%event(1:m), c_int)
+      extremum(1:m) = int(branch%extremum(1:m), c_int)
+      n_points = int(branch%n, c_int)
+      if (branch%n > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_trace_branch: capacity too small"
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_trace_branch
+
+!> The events of load-controlled loading (stage 1) and unloading (stage 2), P_fc*, P_pf*,
+!> their mechanisms and the loop area: the first min(n_events, capacity) events; status 4
+!> when n_events > capacity. On other failures n_events = 0 and P_fc = P_pf = NaN.
+subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star, p_star, &
+      n_events, p_fc, p_pf, fc_mechanism, pf_mechanism, loop_area, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_loadpath, only: path_type, load_path
+   implicit none
+   !> Length of the event arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Stage of each event: 1 loading, 2 unloading
+   integer(c_int), intent(out) :: stage(capacity)
+   !> Event code of each event (3 jump start, 4 jump end, 5 full contact reached, ...)
+   integer(c_int), intent(out) :: event(capacity)
+   !> a* of each event
+   real(c_double), intent(out) :: a_star(capacity)
+   !> c* of each event
+   real(c_double), intent(out) :: c_star(capacity)
+   !> P* of each event
+   real(c_double), intent(out) :: p_star(capacity)
+   !> Number of events (may exceed capacity)
+   integer(c_int), intent(out) :: n_events
+   !> Load at which full contact is first reached
+   real(c_double), intent(out) :: p_fc
+   !> Pull-off load (-Infinity: never)
+   real(c_double), intent(out) :: p_pf
+   !> How full contact is reached: 0 gradual, 1 jump (case 1), 2 jump (case 2), 3 snap
+   integer(c_int), intent(out) :: fc_mechanism
+   !> How contact is lost: 0 gradual, 1 jump (case 1), 2 jump (case 2)
+   integer(c_int), intent(out) :: pf_mechanism
+   !> Area of the P*-a* hysteresis loop
+   real(c_double), intent(out) :: loop_area
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(path_type) :: path
+   integer :: m, stat
+
+   message = ""
+   stage = 0; event = 0; a_star = 0.0_c_double; c_star = 0.0_c_double; p_star = 0.0_c_double
+   n_events = 0; fc_mechanism = -1; pf_mechanism = -1
+   p_fc = ieee_value(1.0_c_double, ieee_quiet_nan); p_pf = p_fc; loop_area = p_fc
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call load_path(int(model), params, path, stat, message)
+   if (stat == wa_ok) then
+      m = min(path%n, int(capacity))
+      stage(1:m) = int(path%stage(1:m), c_int)
+      event(1:m) = int(path%event(1:m), c_int)
+      a_star(1:m) = path%a_star(1:m)
+      c_star(1:m) = path%c_star(1:m)
+      p_star(1:m) = path%p_star(1:m)
+      n_events = int(path%n, c_int)
+      p_fc = path%p_fc; p_pf = path%p_pf
+      fc_mechanism = int(path%fc_mechanism, c_int)
+      pf_mechanism = int(path%pf_mechanism, c_int)
+      loop_area = path%loop_area
+      if (path%n > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_load_path: capacity too small"
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_load_path
+
+!> P_fc*, P_pf* and their mechanisms for one alpha over n values of mu, in one call of
+!> wa_loadpath::critical_sweep. Every mu is validated first: the first invalid one is
+!> reported through ifail (1-based) and nothing is computed. On any failure every output
+!> is NaN (mechanisms -1).
+subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_mechanism, &
+      ifail, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_loadpath, only: critical_sweep
+   implicit none
+   !> Number of mu values
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameters, >= 0
+   real(c_double), intent(in) :: mu(n)
+   !> Loads at which full contact is first reached
+   real(c_double), intent(out) :: p_fc(n)
+   !> Pull-off loads (-Infinity: never)
+   real(c_double), intent(out) :: p_pf(n)
+   !> How full contact is reached (0 gradual, 1 jump case 1, 2 jump case 2, 3 snap)
+   integer(c_int), intent(out) :: fc_mechanism(n)
+   !> How contact is lost (0 gradual, 1 jump case 1, 2 jump case 2)
+   integer(c_int), intent(out) :: pf_mechanism(n)
+   !> Index of the invalid mu (1-based), 0 when every mu is valid
+   integer(c_int), intent(out) :: ifail
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   integer, allocatable :: fc_mech(:), pf_mech(:)
+   integer :: i, stat
+
+   message = ""
+   ifail = 0
+   p_fc = ieee_value(1.0_c_double, ieee_quiet_nan); p_pf = p_fc
+   fc_mechanism = -1; pf_mechanism = -1
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, 0.0_c_double, params, stat, message)
+   do i = 1, n
+      if (stat /= wa_ok) exit
+      call new_params(alpha, mu(i), params, stat, message)
+      if (stat /= wa_ok) ifail = i
+   end do
+   if (stat == wa_ok .and. n > 0) then
+      allocate (fc_mech(n), pf_mech(n))
+      call critical_sweep(int(model), alpha, mu, p_fc, p_pf, fc_mech, pf_mech, stat, message)
+      if (stat == wa_ok) then
+         fc_mechanism = int(fc_mech, c_int)
+         pf_mechanism = int(pf_mech, c_int)
+      else
+         p_fc = ieee_value(1.0_c_double, ieee_quiet_nan); p_pf = p_fc
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_critical_sweep

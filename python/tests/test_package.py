@@ -12,8 +12,11 @@ from wavyadhesion import _core
 
 def test_public_names():
     for name in ("westergaard_load", "jkr_load", "equilibrium", "roots", "Params",
-                 "WavyAdhesionError", "InvalidArgumentError", "ConvergenceError"):
+                 "WavyAdhesionError", "InvalidArgumentError", "ConvergenceError",
+                 "trace_branch", "load_path", "critical_forces", "Branch", "LoadPath",
+                 "CriticalForces", "EVENTS", "MECHANISMS", "STAGES"):
         assert hasattr(wa, name)
+    assert set(wa.__all__) <= set(dir(wa))
     assert wa.MODELS == {"westergaard": 0, "jkr": 1, "dw": 2, "md": 3}
 
 
@@ -24,7 +27,8 @@ def test_docstring_examples():
 
 
 def test_every_public_function_documented():
-    for name in ("westergaard_load", "jkr_load", "equilibrium", "roots"):
+    for name in ("westergaard_load", "jkr_load", "equilibrium", "roots", "trace_branch",
+                 "load_path", "critical_forces"):
         doc = getattr(wa, name).__doc__
         assert "Parameters" in doc and "Returns" in doc and "Raises" in doc
 
@@ -48,6 +52,45 @@ def test_header_constants_equal_fortran(repo):
                            ("wa_zone_whole_period", "zone_whole_period"),
                            ("wa_zone_full_contact", "zone_full_contact")):
         assert c[c_name] == state[f_name]
+
+
+def test_header_event_and_mechanism_constants(repo):
+    """WA_EVENT_*, WA_STAGE_*, WA_MECHANISM_* equal the Fortran constants and the
+    Python tables."""
+    header = (repo / "include" / "wavyadhesion.h").read_text()
+    c = {k.lower(): int(v) for k, v in re.findall(r"#define\s+(WA_\w+)\s+(\d+)", header)}
+    branch = _fortran_constants((repo / "src" / "wa_branch.f90").read_text())
+    path = _fortran_constants((repo / "src" / "wa_loadpath.f90").read_text())
+    events = {"none": "none", "fold": "fold", "switch": "switch",
+              "jump_start": "jump_start", "jump_end": "jump_end",
+              "full_contact_reached": "full_contact_reached",
+              "full_contact_left": "full_contact_left", "pull_off": "pull_off",
+              "branch_end": "branch_end"}
+    for name in events:
+        assert c["wa_event_" + name] == branch["event_" + name], name
+        assert wa.EVENTS[c["wa_event_" + name]] == name
+    for code, name in enumerate(wa.MECHANISMS):
+        assert c["wa_mechanism_" + name] == path["mechanism_" + name] == code, name
+    for code, name in wa.STAGES.items():
+        assert c["wa_stage_" + name] == path["stage_" + name] == code, name
+
+
+def test_matplotlib_not_imported():
+    """The plotting helpers are optional: importing the package does not import
+    matplotlib."""
+    import subprocess
+    import sys
+    code = ("import sys, wavyadhesion, wavyadhesion.plotting; "
+            "print('matplotlib' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "False"
+
+
+def test_meson_installs_every_module(repo):
+    meson = (repo / "python" / "meson.build").read_text()
+    for f in sorted((repo / "python" / "wavyadhesion").glob("*.py")):
+        assert f"'wavyadhesion/{f.name}'" in meson, f"{f.name} missing from meson.build"
 
 
 def test_meson_lists_every_source(repo):

@@ -35,3 +35,28 @@ def test_threads_with_errors_and_roots():
     with ThreadPoolExecutor(max_workers=4) as pool:
         threaded = list(pool.map(work, range(24)))
     assert serial == threaded
+
+
+def test_four_threads_branches_paths_critical():
+    """trace_branch, load_path and critical_forces from 4 threads at once equal the
+    serial results bit for bit."""
+    jobs = [(model, mu) for model in ("dw", "md", "jkr", "westergaard")
+            for mu in (1.0, 3.0, 5.0)]
+
+    def work(job):
+        model, mu = job
+        b = wa.trace_branch(model, 0.3, mu)
+        p = wa.load_path(model, 0.3, mu)
+        c = wa.critical_forces(model, [0.3, 0.6], mu)
+        return ([getattr(b, k) for k in ("a_star", "c_star", "P_star", "zone_case",
+                                         "stable", "event")],
+                [p.stage, p.event, p.a_star, p.P_star, np.array([p.P_fc, p.P_pf])],
+                [c.P_fc, c.P_pf, c.fc_mechanism, c.pf_mechanism])
+
+    serial = [work(job) for job in jobs]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        threaded = list(pool.map(work, jobs * 2))
+    for s, t in zip(serial * 2, threaded):
+        for xs, ys in zip(s, t):
+            for x, y in zip(xs, ys):
+                np.testing.assert_array_equal(x, y)

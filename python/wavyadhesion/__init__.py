@@ -14,28 +14,53 @@ Examples
 >>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a=np.linspace(0.01, 0.49, 5))
 >>> eq.zone_case.shape
 (5,)
+>>> P_fc, P_pf = wa.critical_forces("dw", alpha=0.3, mu=np.logspace(-2, 1, 4))
+>>> P_fc.shape
+(4,)
+
+Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plotting``
+(matplotlib is imported only when one of them is called).
 """
 
 from ._core import (
+    EVENTS,
+    MECHANISMS,
     MODELS,
+    STAGES,
+    Branch,
+    BranchEvent,
     ConvergenceError,
+    CriticalForces,
     Equilibrium,
     InvalidArgumentError,
+    LoadPath,
     NoSolutionError,
     Params,
+    PathEvent,
     Scales,
     State,
     WavyAdhesionError,
+    critical_forces,
     equilibrium,
     jkr_load,
+    load_path,
     roots,
+    trace_branch,
     westergaard_load,
 )
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "EVENTS",
+    "MECHANISMS",
     "MODELS",
+    "STAGES",
+    "Branch",
+    "BranchEvent",
+    "CriticalForces",
+    "LoadPath",
+    "PathEvent",
     "ConvergenceError",
     "Equilibrium",
     "InvalidArgumentError",
@@ -44,9 +69,12 @@ __all__ = [
     "Scales",
     "State",
     "WavyAdhesionError",
+    "critical_forces",
     "equilibrium",
     "jkr_load",
+    "load_path",
     "roots",
+    "trace_branch",
     "westergaard_load",
     "__version__",
 ]

@@ -28,6 +28,17 @@ __all__ = [
     "jkr_load",
     "equilibrium",
     "roots",
+    "EVENTS",
+    "MECHANISMS",
+    "STAGES",
+    "Branch",
+    "BranchEvent",
+    "LoadPath",
+    "PathEvent",
+    "CriticalForces",
+    "trace_branch",
+    "load_path",
+    "critical_forces",
 ]
 
 #: Model names and the library's integer constants (include/wavyadhesion.h).
@@ -39,6 +50,34 @@ _CAPACITY_TOO_SMALL, _NUMERICAL_ERROR = 4, 5
 
 # States asked for in a first roots() call; more are fetched in a second call.
 _ROOTS_CAPACITY = 16
+
+# Points asked for in a first trace_branch() call. Branches have a few hundred points
+# (at most 1320 over DW and MD, alpha 0.1-3, mu 0.01-30); a longer one (the library
+# allows 20000) is traced again into arrays of the exact size. Room for 20000 at once
+# would cost ~0.5 ms per call in array set-up (1.55 vs 1.03 ms for a DW branch).
+_BRANCH_CAPACITY = 4096
+
+# Events asked for in a first load_path() call (path_type holds at most 64).
+_PATH_CAPACITY = 64
+
+#: Event codes of branch points and load-path events (SPEC section 7, include/wavyadhesion.h).
+EVENTS = {
+    0: "none",
+    1: "fold",
+    2: "switch",
+    3: "jump_start",
+    4: "jump_end",
+    5: "full_contact_reached",
+    6: "full_contact_left",
+    7: "pull_off",
+    8: "branch_end",
+}
+
+#: How full contact is reached or contact is lost, by code (WA_MECHANISM_* in C).
+MECHANISMS = ("gradual", "jump_case1", "jump_case2", "snap")
+
+#: Load-path stages by code.
+STAGES = {1: "loading", 2: "unloading"}
 
 
 class WavyAdhesionError(Exception):
@@ -93,6 +132,17 @@ def _raise(status: int, message, where: str = "") -> None:
     if status == _NO_SOLUTION:
         raise NoSolutionError(text, status)
     raise ConvergenceError(text, status)
+
+
+def _model_name(code: int) -> str:
+    return next(name for name, c in MODELS.items() if c == code)
+
+
+def _scalar(x, name: str) -> float:
+    arr = _float_array(x, name)
+    if arr.ndim != 0:
+        raise InvalidArgumentError(f"{name} must be a scalar", _INVALID_ARGUMENT)
+    return float(arr)
 
 
 def _model_code(model) -> int:
@@ -337,6 +387,400 @@ def roots(model, alpha, mu, a_star) -> list:
     return [
         State(a_star, float(c[k]), float(p[k]), int(z[k]), float(gap[k])) for k in range(n)
     ]
+
+
+class BranchEvent(NamedTuple):
+    """A point of a branch that carries an event.
+
+    Attributes
+    ----------
+    index : int
+        Position of the point in the branch's arrays.
+    kind : str
+        ``"fold"`` (dP*/da* = 0), ``"switch"`` (zone-case switch: c* reaches or leaves
+        1/2) or ``"branch_end"`` (first and last point); see :data:`EVENTS`.
+    a_star, c_star, P_star : float
+        The state at the event.
+    zone_case : int
+        1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact.
+    """
+
+    index: int
+    kind: str
+    a_star: float
+    c_star: float
+    P_star: float
+    zone_case: int
+
+
+@dataclass(frozen=True, eq=False)
+class Branch:
+    """An equilibrium branch traced by :func:`trace_branch` (points in the order of the
+    curve, from a* -> 0 to a* = 1/2; not necessarily monotone in a*).
+
+    Attributes
+    ----------
+    model : str
+        The model name.
+    alpha, mu : float
+        The parameters.
+    a_star, c_star, P_star : numpy.ndarray of float
+        Contact half-width, interaction-zone half-width and load of each point.
+    b_star : numpy.ndarray of float
+        b* = a* + 0.4 (c* - a*) (the paper's Fig. 5 abscissa).
+    zone_case : numpy.ndarray of int
+        1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact.
+    stable : numpy.ndarray of bool
+        True where dP*/da* > 0 (stable under load control); False at folds.
+    event : numpy.ndarray of int
+        Event code of each point (:data:`EVENTS`; 0 for ordinary points).
+    extremum : numpy.ndarray of int
+        +1 at a local maximum of P* along the curve, -1 at a local minimum, else 0.
+    """
+
+    model: str
+    alpha: float
+    mu: float
+    a_star: np.ndarray
+    c_star: np.ndarray
+    P_star: np.ndarray
+    b_star: np.ndarray
+    zone_case: np.ndarray
+    stable: np.ndarray
+    event: np.ndarray
+    extremum: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.a_star.size)
+
+    @property
+    def events(self) -> list:
+        """Every point with an event, in order, as :class:`BranchEvent`."""
+        return [
+            BranchEvent(int(i), EVENTS[int(self.event[i])], float(self.a_star[i]),
+                        float(self.c_star[i]), float(self.P_star[i]), int(self.zone_case[i]))
+            for i in np.flatnonzero(self.event)
+        ]
+
+    @property
+    def folds(self) -> list:
+        """The folds (dP*/da* = 0), in order along the curve."""
+        return [e for e in self.events if e.kind == "fold"]
+
+    @property
+    def switches(self) -> list:
+        """The zone-case switches (c* reaching or leaving 1/2)."""
+        return [e for e in self.events if e.kind == "switch"]
+
+
+class PathEvent(NamedTuple):
+    """One event of a load path.
+
+    Attributes
+    ----------
+    stage : str
+        ``"loading"`` or ``"unloading"``.
+    kind : str
+        ``"jump_start"``, ``"jump_end"``, ``"full_contact_reached"``,
+        ``"full_contact_left"`` or ``"pull_off"`` (:data:`EVENTS`).
+    a_star, c_star, P_star : float
+        The state (a* = c* = 0 at the jump-in from separation).
+    """
+
+    stage: str
+    kind: str
+    a_star: float
+    c_star: float
+    P_star: float
+
+
+@dataclass(frozen=True, eq=False)
+class LoadPath:
+    """Load-controlled loading from separation at P* = 0 to full contact, then unloading
+    to pull-off, as :func:`load_path` returns it.
+
+    Attributes
+    ----------
+    model : str
+        The model name.
+    alpha, mu : float
+        The parameters.
+    stage : numpy.ndarray of int
+        1 loading, 2 unloading (:data:`STAGES`), one per event.
+    event : numpy.ndarray of int
+        Event codes (:data:`EVENTS`).
+    a_star, c_star, P_star : numpy.ndarray of float
+        The state at each event.
+    P_fc : float
+        Load at which full contact is first reached.
+    P_pf : float
+        Pull-off load (-inf for JKR: full contact never releases).
+    fc_mechanism, pf_mechanism : str
+        How full contact is reached and contact lost (:data:`MECHANISMS`: "gradual",
+        "jump_case1", "jump_case2", "snap").
+    loop_area : float
+        Area enclosed by the loading-unloading loop in the (a*, P*) plane (not an
+        energy; trapezoidal along the branch points, relative accuracy about 1e-4).
+    """
+
+    model: str
+    alpha: float
+    mu: float
+    stage: np.ndarray
+    event: np.ndarray
+    a_star: np.ndarray
+    c_star: np.ndarray
+    P_star: np.ndarray
+    P_fc: float
+    P_pf: float
+    fc_mechanism: str
+    pf_mechanism: str
+    loop_area: float
+
+    def __len__(self) -> int:
+        return int(self.event.size)
+
+    @property
+    def mechanisms(self) -> dict:
+        """``{"full_contact": fc_mechanism, "pull_off": pf_mechanism}``."""
+        return {"full_contact": self.fc_mechanism, "pull_off": self.pf_mechanism}
+
+    @property
+    def events(self) -> list:
+        """The events in order, as :class:`PathEvent`."""
+        return [
+            PathEvent(STAGES[int(st)], EVENTS[int(ev)], float(a), float(c), float(p))
+            for st, ev, a, c, p in zip(self.stage, self.event, self.a_star, self.c_star,
+                                       self.P_star)
+        ]
+
+
+@dataclass(frozen=True, eq=False)
+class CriticalForces:
+    """Critical forces of :func:`critical_forces`; unpacks as ``P_fc, P_pf``.
+
+    Attributes
+    ----------
+    P_fc : numpy.ndarray of float
+        Load at which full contact is first reached (loading from P* = 0).
+    P_pf : numpy.ndarray of float
+        Pull-off load on unloading from full contact (-inf for JKR).
+    fc_mechanism, pf_mechanism : numpy.ndarray of int
+        Index into :data:`MECHANISMS` (0 gradual, 1 jump from case 1, 2 jump from
+        case 2, 3 snap at P* = 0); -1 where a point failed with ``errors="nan"``.
+    """
+
+    P_fc: np.ndarray
+    P_pf: np.ndarray
+    fc_mechanism: np.ndarray
+    pf_mechanism: np.ndarray
+
+    def __iter__(self):
+        yield self.P_fc
+        yield self.P_pf
+
+    def __len__(self) -> int:
+        return 2
+
+    def __getitem__(self, i):
+        return (self.P_fc, self.P_pf)[i]
+
+
+def trace_branch(model, alpha, mu) -> Branch:
+    """The equilibrium branch P*(a*), c*(a*) over 0 < a* <= 1/2, with its folds and
+    zone-case switches.
+
+    DW and MD: pseudo-arclength continuation with adaptive steps through every fold,
+    switching zone case where c* reaches 1/2; folds and switches are located as points
+    of their own. Westergaard and JKR: the closed form sampled at 201 points, JKR's
+    folds located. The whole branch is computed in one Fortran call (GIL released).
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha : float
+        Johnson's parameter, alpha > 0.
+    mu : float
+        Transition parameter, mu >= 0.
+
+    Returns
+    -------
+    Branch
+        Arrays ``a_star, c_star, P_star, b_star, zone_case, stable, event, extremum``
+        (one element per point) and the list ``events`` (also ``folds``, ``switches``).
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model, alpha <= 0, mu < 0, NaN or infinite values.
+    ConvergenceError
+        The continuation failed (e.g. step-size underflow).
+
+    Examples
+    --------
+    >>> b = trace_branch("dw", 0.3, 5.0)
+    >>> [e.kind for e in b.events]
+    ['branch_end', 'fold', 'fold', 'switch', 'branch_end']
+    >>> round(b.folds[1].P_star, 12)
+    0.387507241744
+    """
+    code = _model_code(model)
+    alpha = _scalar(alpha, "alpha")
+    mu = _scalar(mu, "mu")
+    capacity = _BRANCH_CAPACITY
+    while True:
+        out = _f.fa_trace_branch(capacity, code, alpha, mu)
+        a, c, p, b, z, st, ev, ex, n, status, message = out
+        if status == _CAPACITY_TOO_SMALL and n > capacity:
+            capacity = int(n)
+            continue
+        break
+    if status != _OK:
+        _raise(status, message)
+    n = int(n)
+    return Branch(_model_name(code), alpha, mu, a[:n].copy(), c[:n].copy(), p[:n].copy(),
+                  b[:n].copy(), z[:n].copy(), st[:n].astype(bool), ev[:n].copy(),
+                  ex[:n].copy())
+
+
+def load_path(model, alpha, mu) -> LoadPath:
+    """Load-controlled loading and unloading along the branch (MODEL-NOTES.md).
+
+    Loading starts from separation at P* = 0 (jump-in), rises along stable pieces and
+    jumps at every maximum of P* until full contact (load P_fc); unloading leaves full
+    contact, falls along stable pieces and jumps at every minimum until contact is lost
+    (load P_pf).
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha : float
+        Johnson's parameter, alpha > 0.
+    mu : float
+        Transition parameter, mu >= 0.
+
+    Returns
+    -------
+    LoadPath
+        Arrays ``stage, event, a_star, c_star, P_star`` (one element per event), the
+        floats ``P_fc, P_pf, loop_area``, the mechanism names ``fc_mechanism,
+        pf_mechanism`` (also ``mechanisms``) and the list ``events``.
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model or an argument outside its range.
+    ConvergenceError
+        The continuation or a landing-point solve failed.
+
+    Examples
+    --------
+    >>> path = load_path("dw", 0.3, 5.0)
+    >>> [(e.stage, e.kind) for e in path.events][:4]  # doctest: +NORMALIZE_WHITESPACE
+    [('loading', 'jump_start'), ('loading', 'jump_end'), ('loading', 'jump_start'),
+     ('loading', 'full_contact_reached')]
+    >>> path.mechanisms
+    {'full_contact': 'jump_case1', 'pull_off': 'jump_case2'}
+    """
+    code = _model_code(model)
+    alpha = _scalar(alpha, "alpha")
+    mu = _scalar(mu, "mu")
+    capacity = _PATH_CAPACITY
+    while True:
+        out = _f.fa_load_path(capacity, code, alpha, mu)
+        stage, ev, a, c, p, n, p_fc, p_pf, fc_m, pf_m, area, status, message = out
+        if status == _CAPACITY_TOO_SMALL and n > capacity:
+            capacity = int(n)
+            continue
+        break
+    if status != _OK:
+        _raise(status, message)
+    n = int(n)
+    return LoadPath(_model_name(code), alpha, mu, stage[:n].copy(), ev[:n].copy(),
+                    a[:n].copy(), c[:n].copy(), p[:n].copy(), float(p_fc), float(p_pf),
+                    MECHANISMS[int(fc_m)], MECHANISMS[int(pf_m)], float(area))
+
+
+def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForces:
+    """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
+    unloading), vectorised over mu and broadcast with alpha.
+
+    One Fortran call (``critical_sweep``, GIL released) per distinct alpha value traces
+    the branch and follows the load path for each of its mu.
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha : array_like
+        Johnson's parameter, alpha > 0.
+    mu : array_like
+        Transition parameter, mu >= 0; broadcast with `alpha`.
+    errors : {"raise", "nan"}, optional
+        "raise" (default): raise on the first failure. "nan": NaN (mechanism -1) where
+        a point fails, nothing raised (a failing alpha group is then redone point by
+        point to isolate the failure).
+
+    Returns
+    -------
+    CriticalForces
+        ``P_fc``, ``P_pf`` (unpack as ``P_fc, P_pf = critical_forces(...)``) and the
+        mechanism codes ``fc_mechanism``, ``pf_mechanism``, arrays of the broadcast
+        shape (numpy scalars when alpha and mu are scalars). JKR: P_pf = -inf.
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model, alpha <= 0, mu < 0, NaN or infinite values (the message gives the
+        index of the first bad point).
+    ConvergenceError
+        A branch could not be traced.
+
+    Examples
+    --------
+    >>> P_fc, P_pf = critical_forces("dw", 0.3, [0.1, 1.0, 5.0])
+    >>> P_fc.round(6), P_pf.round(6)
+    (array([0.977827, 0.778274, 0.387507]), array([-0.022173, -0.088714, -0.119953]))
+    """
+    code = _model_code(model)
+    if errors not in ("raise", "nan"):
+        raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'", 1)
+    alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
+    shape = mu_b.shape
+    alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
+    p_fc = np.full(mu_f.size, np.nan)
+    p_pf = np.full(mu_f.size, np.nan)
+    fc_m = np.full(mu_f.size, -1, dtype=np.int32)
+    pf_m = np.full(mu_f.size, -1, dtype=np.int32)
+    if mu_f.size:
+        values, inverse = np.unique(alpha_f, return_inverse=True)
+        for k, value in enumerate(values):
+            idx = np.flatnonzero(inverse.reshape(-1) == k)
+            _sweep_group(code, float(value), mu_f, idx, (p_fc, p_pf, fc_m, pf_m), errors,
+                         shape)
+    return CriticalForces(_shaped(p_fc, shape), _shaped(p_pf, shape), _shaped(fc_m, shape),
+                          _shaped(pf_m, shape))
+
+
+def _sweep_group(code, alpha, mu_f, idx, out, errors, shape):
+    """One facade call for the points `idx` that share `alpha`; on failure raise, or
+    (errors="nan") redo the group point by point and leave NaN where a point fails."""
+    p_fc, p_pf, fc_m, pf_m = out
+    fc, pf, fm, pm, ifail, status, message = _f.fa_critical_sweep(
+        code, alpha, np.ascontiguousarray(mu_f[idx]))
+    if status == _OK:
+        p_fc[idx], p_pf[idx], fc_m[idx], pf_m[idx] = fc, pf, fm, pm
+        return
+    if errors == "raise":
+        where = idx[ifail - 1] if ifail > 0 else idx[0]
+        _raise(status, message, _where(int(where) + 1, shape) or
+               ("" if ifail > 0 else f"alpha = {alpha!r}"))
+    if idx.size == 1:
+        return
+    for i in idx:
+        _sweep_group(code, alpha, mu_f, np.array([i]), out, errors, shape)
 
 
 @dataclass(frozen=True)

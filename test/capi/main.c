@@ -1,5 +1,7 @@
 /* C-interface test: `fpm test capi`. Calls every function of include/wavyadhesion.h for
- * every model, with valid and invalid arguments, NULL pointers and too small capacities.
+ * every model, with valid and invalid arguments, NULL pointers and too small capacities;
+ * branches, load paths and critical forces are compared with the numbers the command
+ * line prints.
  * Prints one line per failed check and a closing "N passed, N failed"; exits non-zero
  * when anything failed. */
 #include <math.h>
@@ -318,6 +320,444 @@ static void test_threads(void) {
    }
 }
 
+/* ------------------------------------------------------------ continuation */
+
+#define BRANCH_CAP 4000
+typedef struct {
+   double a[BRANCH_CAP], c[BRANCH_CAP], p[BRANCH_CAP];
+   int z[BRANCH_CAP], s[BRANCH_CAP], e[BRANCH_CAP], n, st;
+} branch_buf;
+
+static int trace(int model, double alpha, double mu, branch_buf *b) {
+   b->n = -1;
+   b->st = wa_trace_branch(model, alpha, mu, BRANCH_CAP, b->a, b->c, b->p, b->z, b->s, b->e,
+                           &b->n);
+   return b->st;
+}
+
+static int count_events(const branch_buf *b, int code) {
+   int i, k = 0;
+   for (i = 0; i < b->n; i++) k += b->e[i] == code;
+   return k;
+}
+
+/* Every model: a well-formed branch from a* -> 0 to a* = 1/2 whose points are equilibria
+   (each P* is among the wa_roots states at that a*, to 1e-9; zone-case switches are
+   skipped: exactly at the switch the case-1 and case-2 states coincide, and wa_roots may
+   return only the case-1 state there). */
+static void test_branch_every_model(void) {
+   static branch_buf b;
+   int m, i, k;
+   for (m = 0; m < 4; m++) {
+      int st = trace(models[m], 0.3, 1.0, &b), ok = 1, on_curve = 1;
+      CHECK(st == WA_OK && b.n > 100 && b.n <= BRANCH_CAP, "model %d branch: st %d n %d",
+            models[m], st, b.n);
+      if (st != WA_OK) continue;
+      CHECK(b.e[0] == WA_EVENT_BRANCH_END && b.e[b.n - 1] == WA_EVENT_BRANCH_END &&
+               b.a[0] < 1e-5 && b.a[b.n - 1] > 0.5 - 1e-8,
+            "model %d: branch ends: a* %g .. %g, events %d %d", models[m], b.a[0],
+            b.a[b.n - 1], b.e[0], b.e[b.n - 1]);
+      for (i = 0; i < b.n; i++)
+         ok = ok && b.a[i] > 0 && b.a[i] <= 0.5 && b.c[i] >= b.a[i] && b.c[i] <= 0.5 &&
+              isfinite(b.p[i]) && b.z[i] >= 1 && b.z[i] <= 3 &&
+              (b.s[i] == 0 || b.s[i] == 1) && b.e[i] >= WA_EVENT_NONE &&
+              b.e[i] <= WA_EVENT_BRANCH_END && (b.e[i] != WA_EVENT_FOLD || b.s[i] == 0);
+      CHECK(ok, "model %d: every point well formed", models[m]);
+      if (models[m] == WA_MODEL_JKR)
+         CHECK(count_events(&b, WA_EVENT_FOLD) == 2, "jkr alpha 0.3: two folds (got %d)",
+               count_events(&b, WA_EVENT_FOLD));
+      if (models[m] == WA_MODEL_WESTERGAARD)
+         CHECK(count_events(&b, WA_EVENT_FOLD) == 0 && b.z[b.n - 1] == WA_ZONE_FULL_CONTACT,
+               "westergaard: no fold, ends in full contact");
+      for (i = 1; i < b.n - 1; i++) {
+         double cr[8], pr[8];
+         int zr[8], nr = 0, found = 0;
+         if (b.e[i] == WA_EVENT_SWITCH) continue;
+         if (wa_roots(models[m], 0.3, 1.0, b.a[i], 8, cr, pr, zr, &nr) != WA_OK) {
+            on_curve = 0;
+            break;
+         }
+         for (k = 0; k < nr && k < 8; k++) found = found || close_to(pr[k], b.p[i], 1e-9);
+         if (!found) {
+            on_curve = 0;
+            printf("  model %d point %d: a* %.17g P* %.17g not among %d roots\n", models[m],
+                   i, b.a[i], b.p[i], nr);
+            break;
+         }
+      }
+      CHECK(on_curve, "model %d: branch points are equilibria", models[m]);
+   }
+}
+
+/* DW at alpha = 0.3, mu = 5 (paper Fig. 6): two folds and one zone-case switch, where
+   `wavyadhesion branch --model dw --alpha 0.3 --mu 5` puts them. */
+static void test_branch_dw_values(void) {
+   static branch_buf b;
+   static const double fold_a[2] = {5.3308276396925647e-02, 3.7313491247966202e-01};
+   static const double fold_p[2] = {-9.5883008684625154e-02, 3.8750724174362783e-01};
+   int i, k = 0, st = trace(WA_MODEL_DW, 0.3, 5.0, &b);
+   CHECK(st == WA_OK && count_events(&b, WA_EVENT_FOLD) == 2 &&
+            count_events(&b, WA_EVENT_SWITCH) == 1,
+         "dw (0.3, 5): st %d, %d folds, %d switches (want 2, 1)", st,
+         count_events(&b, WA_EVENT_FOLD), count_events(&b, WA_EVENT_SWITCH));
+   for (i = 0; i < b.n; i++) {
+      if (b.e[i] == WA_EVENT_FOLD && k < 2) {
+         CHECK(close_to(b.a[i], fold_a[k], 1e-12) && close_to(b.p[i], fold_p[k], 1e-12),
+               "dw fold %d: a* %.17g P* %.17g", k, b.a[i], b.p[i]);
+         k++;
+      }
+      if (b.e[i] == WA_EVENT_SWITCH)
+         CHECK(close_to(b.a[i], 4.6606802365917238e-01, 1e-12) &&
+                  close_to(b.p[i], -1.1995262953240982e-01, 1e-12) && b.c[i] == 0.5 &&
+                  b.z[i] == WA_ZONE_WHOLE_PERIOD,
+               "dw switch: a* %.17g P* %.17g zone %d", b.a[i], b.p[i], b.z[i]);
+   }
+   CHECK(b.z[b.n - 1] == WA_ZONE_FULL_CONTACT && b.a[b.n - 1] == 0.5, "dw ends at 1/2");
+}
+
+/* Capacity: 0 with NULL arrays counts; a short buffer gets the first points, nothing
+   beyond, the full count and WA_CAPACITY_TOO_SMALL. */
+static void test_branch_capacity(void) {
+   static branch_buf full;
+   double a[12], c[12], p[12];
+   int z[12], s[12], e[12], m, n, i, st;
+   char msg[256];
+   for (m = 0; m < 4; m++) {
+      if (trace(models[m], 0.3, 5.0, &full) != WA_OK) {
+         CHECK(0, "model %d: trace failed", models[m]);
+         continue;
+      }
+      n = -1;
+      st = wa_trace_branch(models[m], 0.3, 5.0, 0, NULL, NULL, NULL, NULL, NULL, NULL, &n);
+      CHECK(st == WA_CAPACITY_TOO_SMALL && n == full.n, "model %d count query: st %d n %d/%d",
+            models[m], st, n, full.n);
+      for (i = 0; i < 12; i++) {
+         a[i] = c[i] = p[i] = -7;
+         z[i] = s[i] = e[i] = -7;
+      }
+      st = wa_trace_branch(models[m], 0.3, 5.0, 10, a, c, p, z, s, e, &n);
+      CHECK(st == WA_CAPACITY_TOO_SMALL && n == full.n, "model %d capacity 10: st %d n %d",
+            models[m], st, n);
+      for (i = 0; i < 10; i++)
+         CHECK(a[i] == full.a[i] && c[i] == full.c[i] && p[i] == full.p[i] &&
+                  z[i] == full.z[i] && s[i] == full.s[i] && e[i] == full.e[i],
+               "model %d capacity 10: point %d", models[m], i);
+      for (i = 10; i < 12; i++)
+         CHECK(a[i] == -7 && c[i] == -7 && p[i] == -7 && z[i] == -7 && s[i] == -7 &&
+                  e[i] == -7,
+               "model %d: element %d written beyond capacity", models[m], i);
+   }
+   st = wa_trace_branch_msg(WA_MODEL_DW, 0.3, 5.0, 10, a, c, p, z, s, e, &n, msg, sizeof msg);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && strstr(msg, "capacity = 10"), "message: '%s'", msg);
+}
+
+/* NULL pointers, negative capacity, invalid model, alpha, mu: WA_INVALID_ARGUMENT,
+   *n_points = 0, nothing written. */
+static void test_branch_invalid(void) {
+   double a[4] = {-7, -7, -7, -7}, c[4], p[4];
+   int z[4], s[4], e[4], n, m, i;
+   char msg[256];
+   const double bad_alpha[] = {0.0, -1.0, NAN, INFINITY};
+   const double bad_mu[] = {-1e-3, NAN, INFINITY};
+   for (m = 0; m < 4; m++) {
+      int md = models[m];
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, e, NULL) == WA_INVALID_ARGUMENT,
+            "model %d NULL n_points", md);
+      CHECK(wa_trace_branch(md, 0.3, 1.0, -1, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+            "model %d capacity -1", md);
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, NULL, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+            "NULL a_star");
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, NULL, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+            "NULL c_star");
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, NULL, z, s, e, &n) == WA_INVALID_ARGUMENT,
+            "NULL P_star");
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, NULL, s, e, &n) == WA_INVALID_ARGUMENT,
+            "NULL zone_case");
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, NULL, e, &n) == WA_INVALID_ARGUMENT,
+            "NULL stable");
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, NULL, &n) == WA_INVALID_ARGUMENT,
+            "NULL event");
+      for (i = 0; i < 4; i++) {
+         n = 5;
+         CHECK(wa_trace_branch(md, bad_alpha[i], 1.0, 4, a, c, p, z, s, e, &n) ==
+                  WA_INVALID_ARGUMENT && n == 0,
+               "model %d alpha %g", md, bad_alpha[i]);
+      }
+      for (i = 0; i < 3; i++) {
+         n = 5;
+         CHECK(wa_trace_branch(md, 0.3, bad_mu[i], 4, a, c, p, z, s, e, &n) ==
+                  WA_INVALID_ARGUMENT && n == 0,
+               "model %d mu %g", md, bad_mu[i]);
+      }
+   }
+   n = 5;
+   CHECK(wa_trace_branch(4, 0.3, 1.0, 4, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT &&
+            n == 0,
+         "model 4");
+   CHECK(wa_trace_branch(-1, 0.3, 1.0, 4, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+         "model -1");
+   CHECK(a[0] == -7, "nothing written on invalid arguments");
+   CHECK(wa_trace_branch_msg(WA_MODEL_DW, -0.3, 1.0, 4, a, c, p, z, s, e, &n, msg,
+                             sizeof msg) == WA_INVALID_ARGUMENT &&
+            strstr(msg, "alpha") && strstr(msg, "(0, inf)"),
+         "alpha message: '%s'", msg);
+   CHECK(wa_trace_branch_msg(WA_MODEL_DW, 0.3, 1.0, 4, NULL, c, p, z, s, e, &n, msg,
+                             sizeof msg) == WA_INVALID_ARGUMENT &&
+            strstr(msg, "NULL"),
+         "NULL message: '%s'", msg);
+   CHECK(wa_trace_branch_msg(7, 0.3, 1.0, 4, a, c, p, z, s, e, &n, msg, sizeof msg) ==
+            WA_INVALID_ARGUMENT && strstr(msg, "model"),
+         "model message: '%s'", msg);
+   CHECK(wa_trace_branch_msg(WA_MODEL_DW, 0.3, 1.0, 4000, NULL, NULL, NULL, NULL, NULL, NULL,
+                             &n, msg, sizeof msg) == WA_INVALID_ARGUMENT,
+         "NULL arrays with capacity > 0");
+}
+
+/* P_fc*, P_pf* as `wavyadhesion critical --model M --alpha A --mu U` prints them (the
+   CLI writes 17 significant digits, so these are the same doubles to ~1 ulp). */
+static void test_critical_values(void) {
+   static const struct {
+      int model;
+      double alpha, mu, p_fc, p_pf;
+   } cases[] = {
+      {WA_MODEL_DW, 0.3, 0.1, 9.7782736093678035e-01, -2.2172639053350034e-02},
+      {WA_MODEL_DW, 0.3, 1.0, 7.7827360936780365e-01, -8.8714284799719462e-02},
+      {WA_MODEL_DW, 0.3, 5.0, 3.8750724174362783e-01, -1.1995262953240982e-01},
+      {WA_MODEL_DW, 0.6, 0.1, 9.6480312942613400e-01, -3.5196870563996438e-02},
+      {WA_MODEL_DW, 0.6, 1.0, 6.4803129426133954e-01, -2.3352051827366535e-01},
+      {WA_MODEL_DW, 0.6, 5.0, 0.0, -7.8778223218930721e-01},
+      {WA_MODEL_DW, 1.0, 1.0, 5.0523016069339088e-01, -4.9476983929673951e-01},
+      {WA_MODEL_MD, 0.3, 1.0, 5.5654721873560731e-01, -9.0525660009991252e-02},
+      {WA_MODEL_MD, 0.3, 5.0, 3.8764647725517609e-01, -1.3466548525864472e+00},
+   };
+   int i, m;
+   for (i = 0; i < (int)(sizeof cases / sizeof cases[0]); i++) {
+      double fc = 1, pf = 1;
+      int st = wa_critical_forces(cases[i].model, cases[i].alpha, cases[i].mu, &fc, &pf);
+      CHECK(st == WA_OK && close_to(fc, cases[i].p_fc, 1e-14) &&
+               close_to(pf, cases[i].p_pf, 1e-14),
+            "critical model %d (%g, %g): st %d P_fc %.17g P_pf %.17g", cases[i].model,
+            cases[i].alpha, cases[i].mu, st, fc, pf);
+   }
+   for (i = 0; i < 3; i++) {        /* JKR: P_fc independent of mu, P_pf = -inf */
+      double fc, pf;
+      int st = wa_critical_forces(WA_MODEL_JKR, 0.3, 0.5 * i, &fc, &pf);
+      CHECK(st == WA_OK && close_to(fc, 3.8772776072055104e-01, 1e-14) && isinf(pf) &&
+               pf < 0,
+            "jkr critical: st %d P_fc %.17g P_pf %g", st, fc, pf);
+   }
+   for (m = 0; m < 4; m++) {        /* the same numbers through every route */
+      double fc, pf, fc2, pf2, fcs[2], pfs[2], mus[2] = {1.0, 5.0};
+      double a[64], c[64], p[64];
+      int stage[64], ev[64], n = 0, fm[2], pm[2], k, st1, st2, st3;
+      st1 = wa_critical_forces(models[m], 0.3, 5.0, &fc, &pf);
+      st2 = wa_load_path(models[m], 0.3, 5.0, 64, stage, ev, a, c, p, &n, &fc2, &pf2);
+      st3 = wa_critical_sweep(models[m], 0.3, 2, mus, fcs, pfs, fm, pm);
+      CHECK(st1 == WA_OK && st2 == WA_OK && st3 == WA_OK &&
+               memcmp(&fc, &fc2, sizeof fc) == 0 && memcmp(&pf, &pf2, sizeof pf) == 0 &&
+               memcmp(&fc, &fcs[1], sizeof fc) == 0 && memcmp(&pf, &pfs[1], sizeof pf) == 0,
+            "model %d: critical_forces, load_path and critical_sweep agree", models[m]);
+      for (k = 0; k < n; k++) {
+         if (ev[k] == WA_EVENT_FULL_CONTACT_REACHED)
+            CHECK(p[k] == fc && stage[k] == WA_STAGE_LOADING, "model %d: P at full contact",
+                  models[m]);
+         if (ev[k] == WA_EVENT_PULL_OFF)
+            CHECK(memcmp(&p[k], &pf, sizeof pf) == 0 && stage[k] == WA_STAGE_UNLOADING,
+                  "model %d: P at pull-off", models[m]);
+      }
+   }
+}
+
+static void test_critical_invalid(void) {
+   double fc = 1, pf = 1;
+   int m;
+   char msg[256];
+   for (m = 0; m < 4; m++) {
+      CHECK(wa_critical_forces(models[m], 0.3, 1.0, NULL, &pf) == WA_INVALID_ARGUMENT,
+            "NULL P_fc");
+      CHECK(wa_critical_forces(models[m], 0.3, 1.0, &fc, NULL) == WA_INVALID_ARGUMENT,
+            "NULL P_pf");
+      fc = pf = 1;
+      CHECK(wa_critical_forces(models[m], 0.0, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT &&
+               isnan(fc) && isnan(pf),
+            "model %d alpha 0: NaN outputs", models[m]);
+      CHECK(wa_critical_forces(models[m], NAN, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT,
+            "alpha NaN");
+      CHECK(wa_critical_forces(models[m], 0.3, -1.0, &fc, &pf) == WA_INVALID_ARGUMENT,
+            "mu < 0");
+      CHECK(wa_critical_forces(models[m], 0.3, INFINITY, &fc, &pf) == WA_INVALID_ARGUMENT,
+            "mu inf");
+   }
+   CHECK(wa_critical_forces(5, 0.3, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT && isnan(fc),
+         "model 5");
+   CHECK(wa_critical_forces_msg(WA_MODEL_MD, 0.3, -2.0, &fc, &pf, msg, sizeof msg) ==
+            WA_INVALID_ARGUMENT && strstr(msg, "mu") && strstr(msg, "[0, inf)"),
+         "mu message: '%s'", msg);
+   CHECK(wa_critical_forces_msg(WA_MODEL_MD, 0.3, 1.0, &fc, &pf, msg, sizeof msg) == WA_OK &&
+            msg[0] == '\0',
+         "empty message on success");
+}
+
+/* Load paths: the event sequence of `wavyadhesion path --model dw --alpha 0.3 --mu 5`,
+   capacity handling, invalid arguments. */
+static void test_load_path(void) {
+   static const int want_stage[7] = {1, 1, 1, 1, 2, 2, 2};
+   static const int want_event[7] = {3, 4, 3, 5, 6, 3, 7};
+   double a[8], c[8], p[8], fc, pf;
+   int stage[8], ev[8], n = -1, k, st, m, same = 1;
+   char msg[256];
+   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 8, stage, ev, a, c, p, &n, &fc, &pf);
+   CHECK(st == WA_OK && n == 7, "dw path (0.3, 5): st %d n %d (want 7)", st, n);
+   for (k = 0; k < 7 && n == 7; k++)
+      same = same && stage[k] == want_stage[k] && ev[k] == want_event[k];
+   CHECK(same, "dw path (0.3, 5): stages and events as the CLI prints them");
+   CHECK(n == 7 && close_to(a[1], 1.4954454098314016e-01, 1e-12) && p[1] == 0.0 &&
+            close_to(p[2], 3.8750724174362783e-01, 1e-14) &&
+            close_to(p[4], -1.0863195316098184e-01, 1e-12),
+         "dw path values: a %.17g P %.17g %.17g", a[1], p[2], p[4]);
+   for (k = 0; k < 8; k++) {
+      a[k] = -7;
+      ev[k] = -7;
+   }
+   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 3, stage, ev, a, c, p, &n, &fc, &pf);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n == 7 && ev[2] == 3 && ev[3] == -7 && a[3] == -7 &&
+            close_to(fc, 3.8750724174362783e-01, 1e-14),
+         "path capacity 3: st %d n %d", st, n);
+   st = wa_load_path(WA_MODEL_JKR, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, &n, &fc, &pf);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n == 5 && isinf(pf) && pf < 0,
+         "jkr path count: st %d n %d", st, n);
+   for (m = 0; m < 4; m++) {
+      int md = models[m];
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, NULL, &fc, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "NULL n_events");
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, NULL, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "NULL P_fc");
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, NULL) ==
+               WA_INVALID_ARGUMENT,
+            "NULL P_pf");
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, NULL, ev, a, c, p, &n, &fc, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "NULL stage");
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, NULL, &n, &fc, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "NULL P_star");
+      CHECK(wa_load_path(md, 0.3, 1.0, -2, stage, ev, a, c, p, &n, &fc, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "capacity -2");
+      n = 3;
+      CHECK(wa_load_path(md, -0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+               WA_INVALID_ARGUMENT && n == 0 && isnan(fc) && isnan(pf),
+            "model %d alpha < 0", md);
+      CHECK(wa_load_path(md, 0.3, NAN, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+               WA_INVALID_ARGUMENT,
+            "mu NaN");
+   }
+   CHECK(wa_load_path(9, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+            WA_INVALID_ARGUMENT,
+         "model 9");
+   st = wa_load_path_msg(WA_MODEL_DW, 0.3, 5.0, 3, stage, ev, a, c, p, &n, &fc, &pf, msg,
+                         sizeof msg);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && strstr(msg, "7 events"), "path message: '%s'", msg);
+}
+
+/* Sweeps: the mechanisms the CLI's mechanism notes locate (DW, alpha 0.3: P_pf gradual ->
+   jump case 1 at mu 0.299, P_fc gradual -> jump case 1 at 2.77, P_pf jump case 1 -> case 2
+   at 4.89); an invalid mu anywhere fails the whole sweep before any work. */
+static void test_critical_sweep(void) {
+   double mu[3] = {0.1, 1.0, 5.0}, fc[3], pf[3];
+   int fm[3], pm[3], st, i;
+   char msg[256];
+   st = wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, pm);
+   CHECK(st == WA_OK && fm[0] == WA_MECHANISM_GRADUAL && pm[0] == WA_MECHANISM_GRADUAL &&
+            fm[1] == WA_MECHANISM_GRADUAL && pm[1] == WA_MECHANISM_JUMP_CASE1 &&
+            fm[2] == WA_MECHANISM_JUMP_CASE1 && pm[2] == WA_MECHANISM_JUMP_CASE2,
+         "dw sweep mechanisms: st %d fc %d %d %d pf %d %d %d", st, fm[0], fm[1], fm[2], pm[0],
+         pm[1], pm[2]);
+   for (i = 0; i < 3; i++) {
+      double f1, p1;
+      wa_critical_forces(WA_MODEL_DW, 0.3, mu[i], &f1, &p1);
+      CHECK(fc[i] == f1 && pf[i] == p1, "sweep point %d equals wa_critical_forces", i);
+   }
+   st = wa_critical_sweep(WA_MODEL_DW, 0.6, 1, mu + 2, fc, pf, fm, pm);
+   CHECK(st == WA_OK && fm[0] == WA_MECHANISM_SNAP && fc[0] == 0.0,
+         "dw (0.6, 5): full contact by a snap at P* = 0 (st %d mech %d)", st, fm[0]);
+   mu[1] = -1.0;
+   st = wa_critical_sweep_msg(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, pm, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && isnan(fc[0]) && isnan(pf[2]) && fm[0] == -1 &&
+            pm[2] == -1 && strstr(msg, "mu[1]"),
+         "invalid mu[1]: st %d msg '%s'", st, msg);
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 0, NULL, NULL, NULL, NULL, NULL) == WA_OK,
+         "empty sweep");
+   CHECK(wa_critical_sweep(WA_MODEL_DW, -0.3, 0, NULL, NULL, NULL, NULL, NULL) ==
+            WA_INVALID_ARGUMENT,
+         "empty sweep still validates alpha");
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, -1, mu, fc, pf, fm, pm) == WA_INVALID_ARGUMENT,
+         "n_mu < 0");
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, NULL, fc, pf, fm, pm) == WA_INVALID_ARGUMENT,
+         "NULL mu");
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, NULL) == WA_INVALID_ARGUMENT,
+         "NULL pf_mechanism");
+   CHECK(wa_critical_sweep(8, 0.3, 3, mu, fc, pf, fm, pm) == WA_INVALID_ARGUMENT, "model 8");
+}
+
+/* 4 threads tracing branches and computing critical forces at once get the serial
+   results bit for bit. */
+#define N_BRANCH_JOBS 6
+typedef struct {
+   int model;
+   double mu;
+   branch_buf b;
+   double fc, pf;
+   int st;
+} branch_job;
+
+static void *run_branch_job(void *arg) {
+   branch_job *job = (branch_job *)arg;
+   trace(job->model, 0.3, job->mu, &job->b);
+   job->st = wa_critical_forces(job->model, 0.3, job->mu, &job->fc, &job->pf);
+   return NULL;
+}
+
+static int same_branch(const branch_job *x, const branch_job *y) {
+   int n = x->b.n;
+   if (x->b.st != y->b.st || n != y->b.n || x->st != y->st) return 0;
+   if (memcmp(&x->fc, &y->fc, sizeof x->fc) || memcmp(&x->pf, &y->pf, sizeof x->pf)) return 0;
+   if (n <= 0) return 1;
+   return memcmp(x->b.a, y->b.a, n * sizeof(double)) == 0 &&
+          memcmp(x->b.c, y->b.c, n * sizeof(double)) == 0 &&
+          memcmp(x->b.p, y->b.p, n * sizeof(double)) == 0 &&
+          memcmp(x->b.z, y->b.z, n * sizeof(int)) == 0 &&
+          memcmp(x->b.s, y->b.s, n * sizeof(int)) == 0 &&
+          memcmp(x->b.e, y->b.e, n * sizeof(int)) == 0;
+}
+
+static void test_branch_threads(void) {
+   static branch_job serial[N_BRANCH_JOBS], threaded[4][N_BRANCH_JOBS];
+   static const double mus[3] = {1.0, 3.0, 5.0};
+   pthread_t tid[4 * N_BRANCH_JOBS];
+   int j, t;
+   for (j = 0; j < N_BRANCH_JOBS; j++) {
+      serial[j].model = j < 3 ? WA_MODEL_DW : WA_MODEL_MD;
+      serial[j].mu = mus[j % 3];
+      run_branch_job(&serial[j]);
+      for (t = 0; t < 4; t++) {
+         threaded[t][j].model = serial[j].model;
+         threaded[t][j].mu = serial[j].mu;
+      }
+   }
+   for (j = 0; j < N_BRANCH_JOBS; j++)      /* 4 threads on each job at once */
+      for (t = 0; t < 4; t++)
+         CHECK(pthread_create(&tid[4 * j + t], NULL, run_branch_job, &threaded[t][j]) == 0,
+               "pthread_create");
+   for (t = 0; t < 4 * N_BRANCH_JOBS; t++) pthread_join(tid[t], NULL);
+   for (j = 0; j < N_BRANCH_JOBS; j++)
+      for (t = 0; t < 4; t++)
+         CHECK(serial[j].b.st == WA_OK && same_branch(&serial[j], &threaded[t][j]),
+               "branch job %d thread %d: results differ from the serial ones", j, t);
+}
+
 int main(void) {
    test_closed_forms();
    test_status_messages();
@@ -330,6 +770,15 @@ int main(void) {
    test_roots_grid();
    test_roots_capacity();
    test_threads();
+   test_branch_every_model();
+   test_branch_dw_values();
+   test_branch_capacity();
+   test_branch_invalid();
+   test_critical_values();
+   test_critical_invalid();
+   test_load_path();
+   test_critical_sweep();
+   test_branch_threads();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

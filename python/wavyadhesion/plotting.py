@@ -1,0 +1,249 @@
+"""Matplotlib helpers that redraw the figures of the double-Westergaard paper from the
+library (optional: matplotlib is imported when a helper is called, never by
+``import wavyadhesion``).
+
+- :func:`figure4`: P*-a* curves (a* < c* < 1/2) of DW and MD for several mu, with the
+  Westergaard and JKR curves, one panel per alpha (paper Fig. 4a, b).
+- :func:`figure6`: a* and c* against P* for one alpha and several mu, with the
+  load-controlled path (paper Fig. 6a-e for alpha = 0.3).
+- :func:`figures9_10`: P_fc* and P_pf* against mu for several alpha, line style by
+  mechanism (paper Figs. 9 and 10).
+
+Every helper returns the matplotlib Figure(s); saving is the caller's business::
+
+    from wavyadhesion import plotting
+    plotting.figure6().savefig("fig6.png", dpi=100)
+
+The example scripts in ``python/examples/`` write ``doc/figures/*.png`` this way.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from ._core import MECHANISMS, WavyAdhesionError, critical_forces, jkr_load, \
+    load_path, trace_branch, westergaard_load
+
+__all__ = ["figure4", "figure6", "figures9_10", "mechanism_runs"]
+
+# Line styles of the paper: solid where the zone is inside the period (case 1) or a
+# jump from case 1, dash-dot for c* = 1/2 (case 2) or a gradual change, dashed for a
+# jump from case 2.
+_CASE_STYLE = {1: "-", 2: "-."}
+_MECHANISM_STYLE = {"gradual": "-.", "jump_case1": "-", "jump_case2": "--", "snap": ":"}
+
+
+def _pyplot():
+    try:
+        import matplotlib.pyplot as plt
+    except ImportError as exc:       # pragma: no cover - depends on the environment
+        raise ImportError("wavyadhesion.plotting needs matplotlib: "
+                          "pip install matplotlib") from exc
+    return plt
+
+
+def _by_case(values: np.ndarray, zone_case: np.ndarray, case: int) -> np.ndarray:
+    """`values` where the zone case is `case` (and at the junction points next to such
+    runs, so that consecutive pieces meet), NaN elsewhere."""
+    keep = zone_case == case
+    keep = keep | np.r_[keep[1:], False] | np.r_[False, keep[:-1]]
+    if case == 1:                        # full contact (case 3) belongs to neither piece
+        keep &= zone_case != 3
+    return np.where(keep, values, np.nan)
+
+
+def _trace_or_warn(model, alpha, mu):
+    try:
+        return trace_branch(model, alpha, mu)
+    except WavyAdhesionError as exc:
+        warnings.warn(f"{model} alpha={alpha} mu={mu}: {exc}; curve left out", stacklevel=3)
+        return None
+
+
+def figure4(alphas=(0.3, 0.6), mus=(0.3, 1.0, 3.0, 10.0), *, models=("dw", "md")):
+    """Equilibrium P*-a* curves with a* < c* < 1/2 (paper Fig. 4).
+
+    Parameters
+    ----------
+    alphas : sequence of float
+        One panel per alpha (the paper: 0.3 and 0.6).
+    mus : sequence of float
+        Transition parameters, one colour each.
+    models : sequence of str
+        Cohesive models drawn: DW solid, MD dashed.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, len(alphas), figsize=(5.0 * len(alphas), 4.2), squeeze=False)
+    a = np.linspace(1e-4, 0.5 - 1e-4, 400)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.85, len(mus)))
+    styles = {"dw": "-", "md": "--"}
+    for ax, alpha in zip(axes[0], alphas):
+        ax.plot(a, westergaard_load(a), color="0.4", lw=1.2, label="Westergaard")
+        ax.plot(a, jkr_load(alpha, a), color="k", lw=1.2, ls="-.", label="JKR")
+        for colour, mu in zip(colours, mus):
+            for model in models:
+                b = _trace_or_warn(model, alpha, mu)
+                if b is None:
+                    continue
+                ax.plot(b.a_star, _by_case(b.P_star, b.zone_case, 1), color=colour,
+                        ls=styles.get(model, ":"), lw=1.4,
+                        label=f"{model.upper()} $\\mu$={mu:g}")
+        ax.set_xlim(0.0, 0.5)
+        ax.set_ylim(-1.2, 1.1)
+        ax.axhline(0.0, color="0.8", lw=0.6, zorder=0)
+        ax.set_xlabel("$a^*$")
+        ax.set_ylabel("$P^*$")
+        ax.set_title(f"$\\alpha$ = {alpha:g}")
+    axes[0][0].legend(fontsize=7, ncol=2, loc="lower left")
+    fig.suptitle("Equilibrium $P^*$-$a^*$ curves with $a < c < L/2$ (cf. paper Fig. 4)",
+                 fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw"):
+    """Contact and interaction-zone half-widths against the load (paper Fig. 6).
+
+    a* in red and c* in black, solid where a* < c* < 1/2 and dash-dot where c* = 1/2
+    (the paper's convention); the load-controlled path is overlaid in blue (jumps as
+    dotted lines at constant load, P_fc and P_pf marked).
+
+    Parameters
+    ----------
+    alpha : float
+        Johnson's parameter (the paper: 0.3).
+    mus : sequence of float
+        One panel per mu (the paper: 0.1, 1, 2.5, 3, 5).
+    model : str
+        "dw" (the paper) or "md".
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    plt = _pyplot()
+    ncol = min(3, len(mus))
+    nrow = -(-len(mus) // ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.4 * nrow), squeeze=False)
+    for ax in axes.flat[len(mus):]:
+        ax.set_visible(False)
+    for ax, mu in zip(axes.flat, mus):
+        b = _trace_or_warn(model, alpha, mu)
+        if b is None:
+            continue
+        for case, ls in _CASE_STYLE.items():
+            ax.plot(_by_case(b.P_star, b.zone_case, case), b.a_star, color="tab:red",
+                    ls=ls, lw=1.4)
+            ax.plot(_by_case(b.P_star, b.zone_case, case), b.c_star, color="k", ls=ls,
+                    lw=1.0)
+        _overlay_path(ax, model, alpha, mu)
+        ax.set_ylim(0.0, 0.52)
+        ax.set_xlabel("$P^*$")
+        ax.set_ylabel("$a^*$ (red), $c^*$ (black)")
+        ax.set_title(f"$\\alpha$ = {alpha:g}, $\\mu$ = {mu:g}", fontsize=10)
+    fig.suptitle(f"{model.upper()}: half-widths against load, path in blue "
+                 "(cf. paper Fig. 6)", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def _overlay_path(ax, model, alpha, mu):
+    """Jumps of the load path as dotted lines at constant load, P_fc and P_pf marked."""
+    try:
+        path = load_path(model, alpha, mu)
+    except WavyAdhesionError as exc:
+        warnings.warn(f"{model} alpha={alpha} mu={mu}: {exc}; path left out", stacklevel=3)
+        return
+    ev = path.events
+    for start, end in zip(ev[:-1], ev[1:]):
+        if start.kind == "jump_start" and end.kind in ("jump_end", "full_contact_reached",
+                                                         "pull_off"):
+            a_end = 0.0 if end.kind == "pull_off" else end.a_star
+            ax.plot([start.P_star, end.P_star], [start.a_star, a_end], color="tab:blue",
+                    ls=":", lw=1.2)
+    ax.plot([path.P_fc], [0.5], "v", color="tab:blue", ms=5)
+    if np.isfinite(path.P_pf):
+        ax.plot([path.P_pf], [0.0], "^", color="tab:blue", ms=5)
+        ax.text(path.P_pf, 0.02, " $P_{pf}$", fontsize=7, color="tab:blue")
+    ax.text(path.P_fc, 0.47, "$P_{fc}$ ", fontsize=7, color="tab:blue", ha="right")
+
+
+def mechanism_runs(mechanism: np.ndarray):
+    """Split an array of mechanism codes into runs: (start, stop, code) with stop one
+    past the run's last index, extended by one point into the next run (so that
+    consecutive pieces drawn with different styles meet)."""
+    runs = []
+    n = len(mechanism)
+    start = 0
+    for i in range(1, n + 1):
+        if i == n or mechanism[i] != mechanism[start]:
+            runs.append((start, min(i + 1, n), int(mechanism[start])))
+            start = i
+    return runs
+
+
+def figures9_10(alphas=(0.3, 0.6, 1.0), mu=None, model="dw"):
+    """Critical forces against the transition parameter (paper Figs. 9 and 10).
+
+    Line style by mechanism: dash-dot where full contact is reached (contact is lost)
+    gradually, solid for a jump from a case-1 state (or the snap into full contact at
+    P* = 0, dotted), dashed for a jump from a case-2 state (c* = 1/2).
+
+    Parameters
+    ----------
+    alphas : sequence of float
+        One colour each (the paper: 0.3, 0.6, 1).
+    mu : array_like, optional
+        Transition parameters (default: 200 values, log-spaced from 0.01 to 10).
+    model : str
+        "dw" (the paper) or "md".
+
+    Returns
+    -------
+    (matplotlib.figure.Figure, matplotlib.figure.Figure)
+        Fig. 9 (P_fc*) and Fig. 10 (P_pf*).
+    """
+    plt = _pyplot()
+    mu = np.logspace(-2, 1, 200) if mu is None else np.asarray(mu, dtype=float)
+    fig9, ax9 = plt.subplots(figsize=(5.2, 4.0))
+    fig10, ax10 = plt.subplots(figsize=(5.2, 4.0))
+    colours = plt.cm.plasma(np.linspace(0.0, 0.75, len(alphas)))
+    for colour, alpha in zip(colours, alphas):
+        crit = critical_forces(model, alpha, mu, errors="nan")
+        for ax, values, mech in ((ax9, crit.P_fc, crit.fc_mechanism),
+                                 (ax10, crit.P_pf, crit.pf_mechanism)):
+            for start, stop, code in mechanism_runs(mech):
+                if code < 0:
+                    continue
+                ax.semilogx(mu[start:stop], values[start:stop], color=colour, lw=1.5,
+                            ls=_MECHANISM_STYLE[MECHANISMS[code]])
+            ax.plot([], [], color=colour, label=f"$\\alpha$ = {alpha:g}")
+        p_jkr = _jkr_full_contact(alpha)
+        ax9.axhline(p_jkr, color=colour, lw=0.7, ls=(0, (1, 3)))
+    for ax in (ax9, ax10):
+        for name, ls in _MECHANISM_STYLE.items():
+            if ax is ax10 and name == "snap":
+                continue
+            ax.plot([], [], color="0.3", ls=ls, label=name.replace("_", " "))
+        ax.set_xlabel("$\\mu$")
+        ax.legend(fontsize=7)
+        ax.set_xlim(mu.min(), mu.max())
+    ax9.set_ylabel("$P^*_{fc}$")
+    ax9.set_title(f"{model.upper()}: load to reach full contact (cf. paper Fig. 9)\n"
+                  "thin dotted: JKR value", fontsize=9)
+    ax10.set_ylabel("$P^*_{pf}$")
+    ax10.set_title(f"{model.upper()}: pull-off load (cf. paper Fig. 10)", fontsize=9)
+    fig9.tight_layout()
+    fig10.tight_layout()
+    return fig9, fig10
+
+
+def _jkr_full_contact(alpha):
+    """JKR P_fc* (the value the cohesive models reach at large mu)."""
+    return float(critical_forces("jkr", alpha, 1.0).P_fc)
