@@ -373,23 +373,32 @@ contains
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a, y
       real(wp), intent(out) :: fa, fy, pa, py
-      real(wp) :: ha, hy, fv(0:4), pv(0:4), side
+      real(wp) :: ha, hy, fv(0:4), pv(0:4)
       integer :: k
 
       ha = 2.0e-3_wp*min(a, 0.5_wp - a, 0.05_wp)
-      hy = 2.0e-3_wp*max(1.0_wp, abs(y))
       do k = 0, 4
          call values_at(a + (k - 2)*ha, y, fv(k), pv(k))
       end do
       fa = central5(fv, ha)
       pa = central5(pv, ha)
-      side = 1.0_wp                                  ! the stencil stays below y_max
-      if (y + 4.0_wp*hy > curve_y_max(model)) side = -1.0_wp
-      do k = 0, 4
-         call values_at(a, y + side*k*hy, fv(k), pv(k))
-      end do
-      fy = side*onesided5(fv, hy)
-      py = side*onesided5(pv, hy)
+      ! in y the functions vary on the scale of the distance to y_max (c* = 1/2): a
+      ! central stencil well inside it, a one-sided one below y_max on the boundary
+      hy = min(2.0e-3_wp*max(1.0_wp, abs(y)), 0.02_wp*(curve_y_max(model) - y))
+      if (hy > 0.0_wp) then
+         do k = 0, 4
+            call values_at(a, y + (k - 2)*hy, fv(k), pv(k))
+         end do
+         fy = central5(fv, hy)
+         py = central5(pv, hy)
+      else
+         hy = 2.0e-3_wp
+         do k = 0, 4
+            call values_at(a, y - k*hy, fv(k), pv(k))
+         end do
+         fy = -onesided5(fv, hy)
+         py = -onesided5(pv, hy)
+      end if
    contains
       pure subroutine values_at(aa, yy, fval, pval)
          real(wp), intent(in) :: aa, yy

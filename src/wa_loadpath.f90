@@ -22,6 +22,8 @@ module wa_loadpath
    public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
+   !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
+   real(wp), parameter :: a_limit = 1.0e-12_wp
    !> Mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
@@ -109,6 +111,7 @@ contains
       call add(path, stage_loading, event_jump_start, 0.0_wp, 0.0_wp, 0.0_wp)
       call vertex(loop, 0.0_wp, 0.0_wp)
       seg = landing_segment(branch, 0.0_wp, 0.0_wp, +1)
+      if (branch%p_star(1) >= 0.0_wp .and. rising(branch, 1)) seg = 1   ! in contact from a* -> 0
       load = 0.0_wp
       path%fc_mechanism = mechanism_snap
       do
@@ -174,9 +177,10 @@ contains
             seg = previous_minimum(branch, k)
             call follow(loop, branch, k, max(seg, 1))
             if (seg == 0) then                       ! shrinks gradually to a* -> 0
-               path%p_pf = branch%p_star(1)
-               call add(path, stage_unloading, event_pull_off, branch%a_star(1), &
-                  branch%c_star(1), path%p_pf)
+               call curve_equilibrium(model, params, a_limit, branch%c_star(1), s, status, errmsg)
+               if (status /= wa_ok) return
+               path%p_pf = s%p_star
+               call add(path, stage_unloading, event_pull_off, s%a_star, s%c_star, path%p_pf)
                call vertex(loop, 0.0_wp, path%p_pf)
                return
             end if

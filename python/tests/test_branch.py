@@ -38,9 +38,11 @@ def test_dw_paper_case_events():
                                           "branch_end"]
     assert np.count_nonzero(b.event == 1) == 2
     f1, f2 = b.folds
-    np.testing.assert_allclose([f1.a_star, f1.P_star, f2.a_star, f2.P_star],
-                               [5.3308276396925647e-02, -9.5883008684625154e-02,
-                                3.7313491247966202e-01, 3.8750724174362783e-01], rtol=1e-12)
+    # folds are located to 1e-10 in a* (SPEC 8); P* is flat there
+    np.testing.assert_allclose([f1.a_star, f2.a_star],
+                               [5.3308276396925647e-02, 3.7313491247966202e-01], rtol=1e-9)
+    np.testing.assert_allclose([f1.P_star, f2.P_star],
+                               [-9.5883008684625154e-02, 3.8750724174362783e-01], rtol=1e-12)
     (s,) = b.switches
     assert s.zone_case == 2 and s.c_star == 0.5
     np.testing.assert_allclose([s.a_star, s.P_star],
