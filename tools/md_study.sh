@@ -2,7 +2,8 @@
 # Measurements behind the MD module's numerical choices (src/wa_md.f90), run from the
 # repository root: Psi_c quadrature error vs time (md_quadrature_study), time per
 # equilibrium (md_timing) and a brute-force check of the root bracketing
-# (md_root_scan_check, several minutes). Builds in a scratch directory, not in build/.
+# (md_root_scan_check, about 30 minutes on one core). Builds in a scratch directory,
+# not in build/.
 # Usage: tools/md_study.sh [study|timing|scan]...   (default: study timing)
 set -e
 root=$(pwd)
