@@ -17,7 +17,7 @@ module wa_branch
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
-      curve_case2_load, curve_start
+      curve_case2_load, curve_starts, curve_variable
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
@@ -41,7 +41,8 @@ module wa_branch
       logical, allocatable :: stable(:)
       !> event code of the point (0 for ordinary points)
       integer, allocatable :: event(:)
-      !> +1 local maximum of P* along the curve, -1 local minimum (folds and corners), 0
+      !> +1 local maximum of P* along the curve, -1 local minimum (folds and corners),
+      !> 2 where a* turns back (two case-1 roots merge; stability changes), else 0
       integer, allocatable :: extremum(:)
    end type branch_type
 
@@ -180,6 +181,9 @@ contains
 
    ! ------------------------------------------------------- cohesive models
 
+   !> The curve from each state at a_start. A piece can return to a* -> 0 (MD: its case-1
+   !> sheets join there) while another piece, e.g. case 2, runs to a* = 1/2: the pieces
+   !> are traced until one reaches a* = 1/2, each starting and ending with event 8.
    subroutine cohesive_branch(model, params, opts, branch, status, errmsg)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
@@ -187,15 +191,60 @@ contains
       type(branch_type), intent(inout) :: branch
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: starts(8)
+      integer :: n_starts, k
+
+      call curve_starts(model, params, opts%a_start, starts, n_starts, status, errmsg)
+      if (status /= wa_ok) return
+      do k = 1, n_starts
+         if (visited(branch, starts(k))) cycle
+         call trace_piece(model, params, opts, starts(k), branch, status, errmsg)
+         if (status /= wa_ok) return
+         if (branch%a_star(branch%n) >= 0.5_wp) return
+      end do
+      call set_error(wa_numerical_error, "trace_branch: no piece of the curve reaches "// &
+         "a* = 1/2", status, errmsg)
+   end subroutine cohesive_branch
+
+   !> Has a traced piece already started or ended at this state?
+   pure logical function visited(branch, s)
+      type(branch_type), intent(in) :: branch
+      type(state_type), intent(in) :: s
+      integer :: i
+      visited = .false.
+      do i = 1, branch%n
+         if (branch%event(i) /= event_branch_end) cycle
+         if (abs(branch%c_star(i) - s%c_star) <= 1.0e-6_wp*s%c_star .and. &
+            abs(branch%a_star(i) - s%a_star) <= 1.0e-3_wp*s%a_star) visited = .true.
+      end do
+   end function visited
+
+   !> One piece of the curve from a start state to a* = 1/2 or back to a* -> 0.
+   subroutine trace_piece(model, params, opts, start, branch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(trace_options), intent(in) :: opts
+      type(state_type), intent(in) :: start
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
       type(curve_point) :: p
       real(wp) :: h
+      integer :: n0
 
-      call curve_start(model, params, opts%a_start, p%a, p%y, p%zone_case, status, errmsg)
-      if (status /= wa_ok) return
-      if (p%zone_case == zone_inside) call orient(model, params, p, [1.0_wp, 0.0_wp])
+      n0 = branch%n
+      p%a = start%a_star
+      p%zone_case = start%zone_case
+      p%y = curve_y_max(model)
+      p%t = [1.0_wp, 0.0_wp]
+      p%dp = case2_slope(p%a)
+      if (p%zone_case == zone_inside) then
+         p%y = curve_variable(model, start)
+         call orient(model, params, p, [1.0_wp, 0.0_wp])
+      end if
       call push(model, params, p, event_branch_end, 0, branch)
       h = opts%step_max
-      do while (branch%n < opts%max_points)
+      do while (branch%n - n0 < opts%max_points)
          if (p%zone_case == zone_inside) then
             call step_case1(model, params, opts, p, h, branch, status, errmsg)
          else
@@ -206,7 +255,7 @@ contains
       end do
       call set_error(wa_not_converged, "trace_branch: max_points reached before a* = 1/2", &
          status, errmsg)
-   end subroutine cohesive_branch
+   end subroutine trace_piece
 
    !> One step along case 2 (explicit in a*): stop at the end, or locate where the
    !> case-1 root enters (F(a*, y_max) changes sign to >= 0) and switch.
@@ -286,10 +335,14 @@ contains
             return
          end if
       end do
-      if (p%dp*q%dp < 0.0_wp) then
-         call locate_fold(model, params, p, h, f, status, errmsg)
+      if (p%dp*q%dp < 0.0_wp) then                  ! a fold of P*
+         call locate_zero(model, params, p, h, 1, f, status, errmsg)
          if (status /= wa_ok) return
          call push(model, params, f, event_fold, merge(1, -1, p%dp > 0.0_wp), branch)
+      else if (p%t(1)*q%t(1) < 0.0_wp) then         ! a* turns back: stability flips
+         call locate_zero(model, params, p, h, 2, f, status, errmsg)
+         if (status /= wa_ok) return
+         call push(model, params, f, event_none, 2, branch)
       end if
       if (q%a <= opts%a_start .or. q%a >= 0.5_wp - 1.0e-12_wp) then
          call push(model, params, q, event_branch_end, 0, branch)
@@ -421,9 +474,10 @@ contains
          /(12.0_wp*h)
    end function onesided5
 
-   !> Brent on dP*/dsigma over the arclength between p and the accepted step h.
-   subroutine locate_fold(model, params, p, h, f, status, errmsg)
-      integer, intent(in) :: model
+   !> Brent over the arclength between p and the accepted step h for the zero of
+   !> dP*/dsigma (which = 1, a fold) or of da*/dsigma (which = 2, a* turns back).
+   subroutine locate_zero(model, params, p, h, which, f, status, errmsg)
+      integer, intent(in) :: model, which
       type(params_type), intent(in) :: params
       type(curve_point), intent(in) :: p
       real(wp), intent(in) :: h
@@ -431,22 +485,21 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(brent_type) :: solver
-      real(wp) :: sigma, d
+      real(wp) :: sigma
       logical :: done, ok
       integer :: iter, iters
 
       status = wa_ok
       call corrector(model, params, p, h, f, iters, ok)
       call orient(model, params, f, p%t)
-      call brent_init(solver, 0.0_wp, p%dp, h, f%dp, 1.0e-13_wp)
+      call brent_init(solver, 0.0_wp, monitored(p), h, monitored(f), 1.0e-13_wp)
       do iter = 1, 100
          call brent_propose(solver, sigma, done)
          if (done) exit
          call corrector(model, params, p, sigma, f, iters, ok)
          if (.not. ok) exit
          call orient(model, params, f, p%t)
-         d = f%dp
-         call brent_accept(solver, d)
+         call brent_accept(solver, monitored(f))
       end do
       call corrector(model, params, p, solver%b, f, iters, ok)
       if (.not. (done .and. ok)) then
@@ -455,7 +508,12 @@ contains
          return
       end if
       call orient(model, params, f, p%t)
-   end subroutine locate_fold
+   contains
+      pure real(wp) function monitored(q)
+         type(curve_point), intent(in) :: q
+         monitored = merge(q%dp, q%t(1), which == 1)
+      end function monitored
+   end subroutine locate_zero
 
    !> Does the curve leave case 1 (reach y_max) within the next step?
    logical function crosses_case2(model, params, p, h)

@@ -14,13 +14,13 @@ module wa_curve
    use wa_state, only: state_type, zone_inside, model_westergaard, model_jkr, model_dw, &
       model_md
    use wa_kernels, only: westergaard_load, jkr_load
-   use wa_dw, only: dw_equilibrium, dw_residual, dw_state_at
-   use wa_md, only: md_roots, md_equilibrium, md_curve_residual, md_curve_state
+   use wa_dw, only: dw_equilibrium, dw_roots, dw_residual, dw_state_at
+   use wa_md, only: md_roots, md_curve_residual, md_curve_state
    implicit none
    private
 
    public :: curve_residual, curve_state, curve_y_max, curve_weight, curve_case2_load
-   public :: curve_start, curve_equilibrium
+   public :: curve_starts, curve_variable, curve_equilibrium
 
 contains
 
@@ -77,31 +77,32 @@ contains
       if (model == model_md) curve_case2_load = sin(pi*a_star)**2 - params%sigma0
    end function curve_case2_load
 
-   !> The principal state at a_start as a curve point (a*, y, zone case).
-   pure subroutine curve_start(model, params, a_start, a, y, zone_case, status, errmsg)
+   !> Every state at a_start (the principal one first): where the curve pieces start.
+   pure subroutine curve_starts(model, params, a_start, states, n, status, errmsg)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_start
-      real(wp), intent(out) :: a, y
-      integer, intent(out) :: zone_case
+      type(state_type), intent(inout) :: states(:)
+      integer, intent(out) :: n
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      type(state_type) :: s
-      a = a_start
-      y = curve_y_max(model)
-      zone_case = 0
+      n = 0
       select case (model)
       case (model_dw)
-         call dw_equilibrium(params, a_start, s, status, errmsg)
+         call dw_roots(params, a_start, states, n, status, errmsg)
       case (model_md)
-         call md_equilibrium(params, a_start, s, status, errmsg)
+         call md_roots(params, a_start, states, n, status, errmsg)
       case default
          call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
       end select
-      if (status /= wa_ok) return
-      zone_case = s%zone_case
-      if (zone_case == zone_inside) y = zone_variable(model, s)
-   end subroutine curve_start
+   end subroutine curve_starts
+
+   !> The curve variable y of a case-1 state.
+   pure real(wp) function curve_variable(model, s)
+      integer, intent(in) :: model
+      type(state_type), intent(in) :: s
+      curve_variable = zone_variable(model, s)
+   end function curve_variable
 
    !> The equilibrium at a* on the branch through c_hint (DW has one; MD may have two
    !> case-1 states and takes the one nearest c_hint).

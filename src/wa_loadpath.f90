@@ -11,6 +11,7 @@ module wa_loadpath
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_branch, only: branch_type, trace_branch, event_jump_start, event_jump_end, &
+      event_branch_end, &
       event_full_contact_reached, event_full_contact_left, event_pull_off
    use wa_curve, only: curve_equilibrium
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
@@ -131,10 +132,11 @@ contains
          end if
          call add(path, stage_loading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
-         k = next_maximum(branch, seg + 1)           ! rise until a maximum or the end
-         call follow(loop, branch, seg + 1, merge(k, branch%n, k > 0))
-         if (k == 0) then
-            path%p_fc = branch%p_star(branch%n)
+         k = piece_end(branch, seg, +1)              ! rise while the piece is stable
+         call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) > &
+            branch%a_star(seg)), k)
+         if (branch%a_star(k) >= 0.5_wp) then
+            path%p_fc = branch%p_star(k)
             path%fc_mechanism = mechanism_gradual
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, path%p_fc)
             return
@@ -159,7 +161,6 @@ contains
       type(state_type) :: s
       integer :: k, seg
       real(wp) :: load
-      logical :: at_minimum
 
       status = wa_ok
       if (model == model_jkr) then                    ! full contact never releases (3.4)
@@ -171,20 +172,21 @@ contains
       load = branch%p_star(k)
       call add(path, stage_unloading, event_full_contact_left, 0.5_wp, 0.5_wp, load)
       call vertex(loop, 0.5_wp, load)
-      at_minimum = .not. rising(branch, k - 1)       ! the end itself may be a minimum
+      seg = 0
+      if (rising(branch, k - 1)) seg = k - 1         ! else the end itself is a minimum
       do
-         if (.not. at_minimum) then                  ! fall along the stable piece
-            seg = previous_minimum(branch, k)
-            call follow(loop, branch, k, max(seg, 1))
-            if (seg == 0) then                       ! shrinks gradually to a* -> 0
-               call curve_equilibrium(model, params, a_limit, branch%c_star(1), s, status, errmsg)
+         if (seg > 0) then                            ! fall while the piece is stable
+            k = piece_end(branch, seg, -1)
+            call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) < &
+               branch%a_star(seg)), k)
+            if (branch%event(k) == event_branch_end) then   ! shrinks gradually to a* -> 0
+               call curve_equilibrium(model, params, a_limit, branch%c_star(k), s, status, errmsg)
                if (status /= wa_ok) return
                path%p_pf = s%p_star
                call add(path, stage_unloading, event_pull_off, s%a_star, s%c_star, path%p_pf)
                call vertex(loop, 0.0_wp, path%p_pf)
                return
             end if
-            k = seg
             load = branch%p_star(k)
          end if
          call add(path, stage_unloading, event_jump_start, branch%a_star(k), &
@@ -203,8 +205,6 @@ contains
          if (status /= wa_ok) return
          call add(path, stage_unloading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
-         k = seg
-         at_minimum = .false.
       end do
    end subroutine unloading
 
@@ -275,34 +275,33 @@ contains
       end function mechanism_at
    end subroutine mechanism_change
 
-   !> First local maximum at or after point k (0 if the curve rises to its end).
-   pure integer function next_maximum(branch, k)
+   !> From the stable segment [seg, seg+1], walk along the branch toward larger a*
+   !> (dir = +1, rising load) or smaller a* (dir = -1) while the segments stay stable;
+   !> the last point reached ends the stable piece: a fold, a corner, a point where a*
+   !> turns back, or an end of the branch.
+   pure integer function piece_end(branch, seg, dir)
       type(branch_type), intent(in) :: branch
-      integer, intent(in) :: k
-      integer :: i
-      next_maximum = 0
-      do i = k, branch%n
-         if (branch%extremum(i) == 1) then
-            next_maximum = i
-            return
-         end if
+      integer, intent(in) :: seg, dir
+      integer :: step, nxt
+      step = merge(1, -1, (branch%a_star(seg + 1) - branch%a_star(seg))*dir > 0.0_wp)
+      piece_end = merge(seg + 1, seg, step == 1)
+      do
+         nxt = piece_end + step
+         if (nxt < 1 .or. nxt > branch%n) exit
+         if (.not. joined(branch, min(piece_end, nxt))) exit
+         if (.not. rising(branch, min(piece_end, nxt))) exit
+         if ((branch%a_star(nxt) - branch%a_star(piece_end))*dir <= 0.0_wp) exit   ! a corner
+         piece_end = nxt
       end do
-   end function next_maximum
+   end function piece_end
 
-   !> Walking back from point k (on a stable piece), the first local minimum (0: none,
-   !> the piece falls to the start of the branch).
-   pure integer function previous_minimum(branch, k)
+   !> Points i and i+1 belong to the same piece of the curve (not end and next start).
+   pure logical function joined(branch, i)
       type(branch_type), intent(in) :: branch
-      integer, intent(in) :: k
-      integer :: i
-      previous_minimum = 0
-      do i = k, 1, -1
-         if (branch%extremum(i) == -1) then
-            previous_minimum = i
-            return
-         end if
-      end do
-   end function previous_minimum
+      integer, intent(in) :: i
+      joined = .not. (branch%event(i) == event_branch_end .and. &
+         branch%event(i + 1) == event_branch_end)
+   end function joined
 
    !> The segment [i, i+1] of a rising (stable) piece that spans `load`, nearest to
    !> a_from in direction dir (+1: larger a*, -1: smaller a*); 0 if none.
@@ -316,7 +315,8 @@ contains
       best = huge(1.0_wp)
       do i = 1, branch%n - 1
          if (.not. rising(branch, i)) cycle
-         if (.not. (branch%p_star(i) <= load .and. load <= branch%p_star(i + 1))) cycle
+         if (.not. (min(branch%p_star(i), branch%p_star(i + 1)) <= load .and. &
+            load <= max(branch%p_star(i), branch%p_star(i + 1)))) cycle
          a_mid = 0.5_wp*(branch%a_star(i) + branch%a_star(i + 1))
          if (dir*(a_mid - a_from) <= 0.0_wp) cycle
          if (abs(a_mid - a_from) < best) then
@@ -330,8 +330,8 @@ contains
    pure logical function rising(branch, i)
       type(branch_type), intent(in) :: branch
       integer, intent(in) :: i
-      rising = (branch%p_star(i + 1) - branch%p_star(i))*(branch%a_star(i + 1) - &
-         branch%a_star(i)) > 0.0_wp
+      rising = joined(branch, i) .and. (branch%p_star(i + 1) - branch%p_star(i)) &
+         *(branch%a_star(i + 1) - branch%a_star(i)) > 0.0_wp
    end function rising
 
    !> The equilibrium on segment [seg, seg+1] whose load is `load` (Brent in a*).

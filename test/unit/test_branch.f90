@@ -25,6 +25,7 @@ contains
          new_unittest("fold_matches_dense_scan", test_fold_scan), &
          new_unittest("md_branch_points_are_equilibria", test_md_points), &
          new_unittest("md_branch_folds_back_and_switches", test_md_shape), &
+         new_unittest("md_case2_piece_reached", test_md_pieces), &
          new_unittest("invalid_model", test_invalid)]
    end subroutine collect_branch
 
@@ -235,7 +236,9 @@ contains
       call check(error, status == wa_ok .and. b%n > 50, "md trace failed")
       if (allocated(error)) return
       do i = 1, b%n
-         if (b%zone_case(i) /= zone_inside .or. b%event(i) /= event_none) cycle
+         ! events and a*-turning points (a double root there) are checked elsewhere
+         if (b%zone_case(i) /= zone_inside .or. b%event(i) /= event_none .or. &
+            b%extremum(i) /= 0) cycle
          call md_roots(params_of(0.3_wp, 1.0_wp), b%a_star(i), states, n, status)
          call check(error, status == wa_ok, "md_roots status")
          call check(error, minval(abs(states(1:n)%c_star - b%c_star(i))) <= 1.0e-12_wp &
@@ -261,6 +264,24 @@ contains
       call check(error, b%extremum(k) == -1, "the switch is not a corner minimum")
       call check(error, b%zone_case(b%n) == zone_full_contact, "branch does not end at a* = 1/2")
    end subroutine test_md_shape
+
+   !> MD alpha 10, mu 10: the case-1 sheets start and end at a* -> 0, case 2 holds at every
+   !> a* and is a piece of its own; unloading follows it down to a* -> 0 (P_pf = -Sigma0).
+   subroutine test_md_pieces(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      type(path_type) :: path
+      type(params_type) :: params
+      integer :: status
+      params = params_of(10.0_wp, 10.0_wp)
+      call trace_branch(model_md, params, b, status)
+      call check(error, status == wa_ok .and. b%a_star(b%n) == 0.5_wp, "no piece reaches 1/2")
+      call check(error, count(b%event(1:b%n) == event_branch_end) >= 4, "expected several pieces")
+      call load_path(model_md, params, path, status)
+      call check(error, status == wa_ok .and. path%pf_mechanism == mechanism_gradual, "pull-off")
+      call check_close(error, path%p_pf, -params%sigma0, 1.0e-12_wp, what="P_pf = -Sigma0")
+      call check(error, path%p_fc == 0.0_wp .and. path%fc_mechanism == mechanism_snap, "P_fc")
+   end subroutine test_md_pieces
 
    subroutine test_invalid(error)
       type(error_type), allocatable, intent(out) :: error
