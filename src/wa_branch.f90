@@ -384,10 +384,31 @@ contains
             exit
          end if
       end do
+      if (ok) call polish(model, params, z(1), z(2), w, g(2)*w)
       q%a = z(1)
       q%y = z(2)/w
       q%zone_case = zone_inside
    end subroutine corrector
+
+   !> Two Newton steps in y at fixed a*: the corrector's step test acts on w y, which
+   !> leaves y (and a steep P*(y) near a* -> 1/2) short of full precision.
+   pure subroutine polish(model, params, a, wy, w, f_y)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a, w, f_y
+      real(wp), intent(inout) :: wy
+      real(wp) :: f, dy
+      integer :: k
+      if (f_y == 0.0_wp) return
+      do k = 1, 2
+         f = curve_residual(model, params, a, wy/w)
+         if (.not. ieee_is_finite(f)) return
+         dy = -f/f_y
+         if (abs(dy) > 1.0e-6_wp*max(1.0_wp, abs(wy/w)) .or. &
+            wy/w + dy > curve_y_max(model)) return
+         wy = wy + w*dy
+      end do
+   end subroutine polish
 
    !> F and its forward-difference gradient (enough for Newton's direction).
    pure subroutine residual_gradient(model, params, a, y, f, g)
