@@ -390,20 +390,25 @@ contains
       q%zone_case = zone_inside
    end subroutine corrector
 
-   !> Two Newton steps in y at fixed a*: the corrector's step test acts on w y, which
+   !> Newton steps in y at fixed a*: the corrector's step test acts on w y, which
    !> leaves y (and a steep P*(y) near a* -> 1/2) short of full precision.
    pure subroutine polish(model, params, a, wy, w, f_y)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a, w, f_y
       real(wp), intent(inout) :: wy
-      real(wp) :: f, dy
+      real(wp) :: f, dy, slope, h
       integer :: k
-      if (f_y == 0.0_wp) return
-      do k = 1, 2
+      slope = f_y
+      do k = 1, 3
          f = curve_residual(model, params, a, wy/w)
-         if (.not. ieee_is_finite(f)) return
-         dy = -f/f_y
+         if (.not. ieee_is_finite(f) .or. slope == 0.0_wp) return
+         if (k == 1) then                  ! a local slope: F may be steep on a small scale
+            h = -1.0e-9_wp*max(1.0_wp, abs(wy/w))
+            slope = (curve_residual(model, params, a, wy/w + h) - f)/h
+            if (slope == 0.0_wp .or. .not. ieee_is_finite(slope)) slope = f_y
+         end if
+         dy = -f/slope
          if (abs(dy) > 1.0e-6_wp*max(1.0_wp, abs(wy/w)) .or. &
             wy/w + dy > curve_y_max(model)) return
          wy = wy + w*dy
