@@ -235,7 +235,7 @@ contains
       n0 = branch%n
       p%a = start%a_star
       p%zone_case = start%zone_case
-      p%y = curve_y_max(model)
+      p%y = curve_y_max
       p%t = [1.0_wp, 0.0_wp]
       p%dp = case2_slope(p%a)
       if (p%zone_case == zone_inside) then
@@ -276,7 +276,7 @@ contains
       if (p%t(1) == 0.0_wp) dir = 1.0_wp
       a_new = min(0.5_wp, max(opts%a_start, p%a + dir*opts%step_max))
       v_new = -1.0_wp
-      if (a_new < 0.5_wp) v_new = curve_residual(model, params, a_new, curve_y_max(model))
+      if (a_new < 0.5_wp) v_new = curve_residual(model, params, a_new, curve_y_max)
       if (v_new < 0.0_wp) then
          q = case2_point(model, a_new, dir)
          if (a_new >= 0.5_wp .or. a_new <= opts%a_start) then
@@ -288,10 +288,10 @@ contains
          p = q
          return
       end if
-      v_old = curve_residual(model, params, p%a, curve_y_max(model))
+      v_old = curve_residual(model, params, p%a, curve_y_max)
       q%a = switch_abscissa(model, params, p%a, v_old, a_new, v_new, status, errmsg)
       if (status /= wa_ok) return
-      q%y = curve_y_max(model)
+      q%y = curve_y_max
       q%zone_case = zone_inside
       slope_before = dir*case2_slope(q%a)
       call orient(model, params, q, [0.0_wp, -1.0_wp])     ! into c* < 1/2
@@ -318,7 +318,7 @@ contains
       status = wa_ok
       do
          call corrector(model, params, p, h, q, iters, ok)
-         if (ok) ok = q%a > 0.0_wp .and. q%a < 0.5_wp .and. q%y <= curve_y_max(model)
+         if (ok) ok = q%a > 0.0_wp .and. q%a < 0.5_wp .and. q%y <= curve_y_max
          if (ok) then
             call orient(model, params, q, p%t)
             ok = dot_product(p%t, q%t) >= cos(opts%max_turn)
@@ -370,7 +370,7 @@ contains
       z = zp
       ok = .false.
       do iters = 1, max_newton
-         if (z(1) <= 0.0_wp .or. z(1) >= 0.5_wp .or. z(2)/w > curve_y_max(model)) return
+         if (z(1) <= 0.0_wp .or. z(1) >= 0.5_wp .or. z(2)/w > curve_y_max) return
          call residual_gradient(model, params, z(1), z(2)/w, f, g)
          g(2) = g(2)/w
          if (.not. (ieee_is_finite(f) .and. all(ieee_is_finite(g)))) return
@@ -410,7 +410,7 @@ contains
          end if
          dy = -f/slope
          if (abs(dy) > 1.0e-6_wp*max(1.0_wp, abs(wy/w)) .or. &
-            wy/w + dy > curve_y_max(model)) return
+            wy/w + dy > curve_y_max) return
          wy = wy + w*dy
       end do
    end subroutine polish
@@ -463,7 +463,7 @@ contains
       pa = central5(pv, ha)
       ! in y the functions vary on the scale of the distance to y_max (c* = 1/2): a
       ! central stencil well inside it, a one-sided one below y_max on the boundary
-      hy = min(2.0e-3_wp*max(1.0_wp, abs(y)), 0.02_wp*(curve_y_max(model) - y))
+      hy = min(2.0e-3_wp*max(1.0_wp, abs(y)), 0.02_wp*(curve_y_max - y))
       if (hy > 0.0_wp) then
          do k = 0, 4
             call values_at(a, y + (k - 2)*hy, fv(k), pv(k))
@@ -551,8 +551,8 @@ contains
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
       ! F(a*, y_max) changes sign across the a* where the curve reaches y_max
       crosses_case2 = p%t(2) > 0.0_wp .and. &
-         curve_residual(model, params, a_next, curve_y_max(model)) &
-         *curve_residual(model, params, p%a, curve_y_max(model)) <= 0.0_wp
+         curve_residual(model, params, a_next, curve_y_max) &
+         *curve_residual(model, params, p%a, curve_y_max) <= 0.0_wp
    end function crosses_case2
 
    !> Locate where the case-1 curve reaches y_max, push the switch event, go on in case 2.
@@ -568,15 +568,15 @@ contains
       type(curve_point) :: q
 
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
-      v_here = curve_residual(model, params, p%a, curve_y_max(model))
-      v_next = curve_residual(model, params, a_next, curve_y_max(model))
+      v_here = curve_residual(model, params, p%a, curve_y_max)
+      v_next = curve_residual(model, params, a_next, curve_y_max)
       ! case 2 goes on to the side where it holds (F(a*, y_max) < 0): ahead for DW; for
       ! MD it may lie behind, where the curve came from along its second case-1 root
       dir = sign(1.0_wp, p%t(1))
       if (v_here < 0.0_wp) dir = -dir
       q%a = switch_abscissa(model, params, p%a, v_here, a_next, v_next, status, errmsg)
       if (status /= wa_ok) return
-      q%y = curve_y_max(model)
+      q%y = curve_y_max
       q%zone_case = zone_inside
       call orient(model, params, q, p%t)
       slope_before = q%dp
@@ -607,7 +607,7 @@ contains
       do iter = 1, 200
          call brent_propose(solver, a, done)
          if (done) exit
-         call brent_accept(solver, curve_residual(model, params, a, curve_y_max(model)))
+         call brent_accept(solver, curve_residual(model, params, a, curve_y_max))
       end do
       a = solver%b
    end function switch_abscissa
@@ -618,7 +618,7 @@ contains
       real(wp), intent(in) :: a, dir
       type(curve_point) :: q
       q%a = a
-      q%y = curve_y_max(model)
+      q%y = curve_y_max
       q%zone_case = zone_whole_period
       q%t = [dir, 0.0_wp]
       q%dp = dir*case2_slope(a)

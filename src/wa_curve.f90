@@ -20,6 +20,9 @@ module wa_curve
    private
 
    public :: curve_residual, curve_state, curve_y_max, curve_weight, curve_case2_load
+
+   !> y where c* = 1/2, in both models' variables.
+   real(wp), parameter :: curve_y_max = 0.0_wp
    public :: curve_starts, curve_variable, curve_equilibrium
 
 contains
@@ -56,11 +59,6 @@ contains
       end select
    end function curve_state
 
-   !> y where c* = 1/2.
-   pure real(wp) function curve_y_max(model)
-      integer, intent(in) :: model
-      curve_y_max = merge(0.0_wp, 0.0_wp, model == model_md)   ! both: c* = 1/2 at y = 0
-   end function curve_y_max
 
    !> Scale of y in the arclength, so that a* and w y vary alike along the curve.
    pure real(wp) function curve_weight(model)
