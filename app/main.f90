@@ -108,7 +108,7 @@ contains
       end do
    end subroutine run_point
 
-   !> All states of a model at one a*; Westergaard and JKR have no cohesive zone (c* = a*).
+   !> All states of a model at one a* (Westergaard and JKR: one, with c* = a*).
    function states_at(model, params, a_star) result(states)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
@@ -119,23 +119,7 @@ contains
       integer :: n, status
 
       msg = ""
-      status = wa_ok
-      select case (model)
-      case (model_westergaard, model_jkr)
-         n = 1
-         buffer(1)%a_star = a_star
-         buffer(1)%c_star = a_star
-         buffer(1)%zone_case = merge(zone_full_contact, zone_inside, a_star == 0.5_wp)
-         if (model == model_jkr) then
-            buffer(1)%p_star = jkr_load(params%alpha, a_star)
-         else
-            buffer(1)%p_star = westergaard_load(a_star)
-         end if
-      case (model_dw)
-         call dw_roots(params, a_star, buffer, n, status, msg)
-      case default
-         call md_roots(params, a_star, buffer, n, status, msg)
-      end select
+      call model_roots(model, params, a_star, buffer, n, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
       states = buffer(1:n)
    end function states_at
@@ -277,28 +261,6 @@ contains
       write (unit, '(i0,a,i0,a)', advance="no") ints(1), sep, ints(2), sep
       call write_row(unit, format, reals)
    end subroutine write_row_ints_first
-
-   function principal(model, params, a_star) result(state)
-      integer, intent(in) :: model
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: a_star
-      type(state_type) :: state
-      type(state_type), allocatable :: all(:)
-      character(len=256) :: msg
-      integer :: status
-      msg = ""
-      select case (model)
-      case (model_dw)
-         call dw_equilibrium(params, a_star, state, status, msg)
-      case (model_md)
-         call md_equilibrium(params, a_star, state, status, msg)
-      case default
-         all = states_at(model, params, a_star)
-         state = all(1)
-         status = wa_ok
-      end select
-      if (status /= wa_ok) call numerical_error(status, msg)
-   end function principal
 
    subroutine usage_error(message)
       character(len=*), intent(in) :: message

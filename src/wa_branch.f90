@@ -17,8 +17,8 @@ module wa_branch
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
-      curve_case2_load, curve_starts, curve_variable
-   use wa_kernels, only: westergaard_load, jkr_load
+      curve_case2_load, curve_variable
+   use wa_models, only: check_model, model_roots, model_equilibrium
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
    private
@@ -85,14 +85,13 @@ contains
       call reserve(branch, 256)
       call check_params(params, status, errmsg)
       if (status /= wa_ok) return
+      call check_model(model, status, errmsg)
+      if (status /= wa_ok) return
       select case (model)
       case (model_westergaard, model_jkr)
          call closed_form_branch(model, params, opts, branch, status)
-      case (model_dw, model_md)
-         call cohesive_branch(model, params, opts, branch, status, errmsg)
       case default
-         call set_error(wa_invalid_argument, "model: must be one of 0 (westergaard), "// &
-            "1 (jkr), 2 (dw), 3 (md)", status, errmsg)
+         call cohesive_branch(model, params, opts, branch, status, errmsg)
       end select
    end subroutine trace_branch
 
@@ -128,7 +127,6 @@ contains
             0, branch)
          a_prev = a; d_prev = d
       end do
-      if (model == model_westergaard) branch%zone_case(branch%n) = zone_full_contact
    end subroutine closed_form_branch
 
    pure function closed_slope(model, params, a) result(d)
@@ -167,14 +165,8 @@ contains
       real(wp), intent(in) :: a
       type(branch_type), intent(inout) :: branch
       type(state_type) :: s
-      s%a_star = a
-      s%c_star = a
-      s%zone_case = zone_inside
-      if (model == model_jkr) then
-         s%p_star = jkr_load(params%alpha, a)
-      else
-         s%p_star = westergaard_load(a)
-      end if
+      integer :: status
+      call model_equilibrium(model, params, a, s, status)   ! a* in range: cannot fail
       call append(branch, s, closed_slope(model, params, a) > 0.0_wp .and. extremum == 0, &
          event, extremum)
    end subroutine append_closed
@@ -194,7 +186,7 @@ contains
       type(state_type) :: starts(8)
       integer :: n_starts, k
 
-      call curve_starts(model, params, opts%a_start, starts, n_starts, status, errmsg)
+      call model_roots(model, params, opts%a_start, starts, n_starts, status, errmsg)
       if (status /= wa_ok) return
       do k = 1, n_starts
          if (visited(branch, starts(k))) cycle

@@ -9,13 +9,13 @@
 module wa_curve
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_invalid_argument, set_error
+   use wa_status, only: wa_ok
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, model_westergaard, model_jkr, model_dw, &
       model_md
-   use wa_kernels, only: westergaard_load, jkr_load
-   use wa_dw, only: dw_equilibrium, dw_roots, dw_residual, dw_state_at
-   use wa_md, only: md_roots, md_curve_residual, md_curve_state
+   use wa_dw, only: dw_residual, dw_state_at
+   use wa_md, only: md_curve_residual, md_curve_state
+   use wa_models, only: model_roots
    implicit none
    private
 
@@ -23,7 +23,7 @@ module wa_curve
 
    !> y where c* = 1/2, in both models' variables.
    real(wp), parameter :: curve_y_max = 0.0_wp
-   public :: curve_starts, curve_variable, curve_equilibrium
+   public :: curve_variable, curve_equilibrium
 
 contains
 
@@ -75,26 +75,6 @@ contains
       if (model == model_md) curve_case2_load = sin(pi*a_star)**2 - params%sigma0
    end function curve_case2_load
 
-   !> Every state at a_start (the principal one first): where the curve pieces start.
-   pure subroutine curve_starts(model, params, a_start, states, n, status, errmsg)
-      integer, intent(in) :: model
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: a_start
-      type(state_type), intent(inout) :: states(:)
-      integer, intent(out) :: n
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      n = 0
-      select case (model)
-      case (model_dw)
-         call dw_roots(params, a_start, states, n, status, errmsg)
-      case (model_md)
-         call md_roots(params, a_start, states, n, status, errmsg)
-      case default
-         call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
-      end select
-   end subroutine curve_starts
-
    !> The curve variable y of a case-1 state.
    pure real(wp) function curve_variable(model, s)
       integer, intent(in) :: model
@@ -102,8 +82,9 @@ contains
       curve_variable = zone_variable(model, s)
    end function curve_variable
 
-   !> The equilibrium at a* on the branch through c_hint (DW has one; MD may have two
-   !> case-1 states and takes the one nearest c_hint).
+   !> The equilibrium at a* on the branch through c_hint: of every state there
+   !> (model_roots: one for DW, Westergaard, JKR; MD may have several), the one whose c*
+   !> is nearest c_hint.
    pure subroutine curve_equilibrium(model, params, a_star, c_hint, state, status, errmsg)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
@@ -111,37 +92,12 @@ contains
       type(state_type), intent(out) :: state
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      select case (model)
-      case (model_dw)
-         call dw_equilibrium(params, a_star, state, status, errmsg)
-      case (model_md)
-         call md_nearest(params, a_star, c_hint, state, status, errmsg)
-      case (model_jkr, model_westergaard)           ! no cohesive zone: c* = a*
-         status = wa_ok
-         state%a_star = a_star
-         state%c_star = a_star
-         state%zone_case = zone_inside
-         state%p_star = merge(jkr_load(params%alpha, a_star), westergaard_load(a_star), &
-            model == model_jkr)
-      case default
-         state%c_star = c_hint
-         call set_error(wa_invalid_argument, "model: no curve for this model", status, errmsg)
-      end select
-   end subroutine curve_equilibrium
-
-   !> The MD state at a* whose c* is nearest c_hint.
-   pure subroutine md_nearest(params, a_star, c_hint, state, status, errmsg)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: a_star, c_hint
-      type(state_type), intent(out) :: state
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      type(state_type) :: states(4)
+      type(state_type) :: states(8)
       integer :: n
-      call md_roots(params, a_star, states, n, status, errmsg)
+      call model_roots(model, params, a_star, states, n, status, errmsg)
       if (status /= wa_ok) return
       state = states(minloc(abs(states(1:n)%c_star - c_hint), dim=1))
-   end subroutine md_nearest
+   end subroutine curve_equilibrium
 
    !> y of a case-1 state; C - A = 2 cos(pi (a*+c*)/2) sin(pi (c*-a*)/2) avoids cancellation.
    pure real(wp) function zone_variable(model, s)

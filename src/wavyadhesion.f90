@@ -12,6 +12,7 @@ module wavyadhesion
       westergaard_displacement, westergaard_gap
    use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
    use wa_md, only: md_equilibrium, md_roots
+   use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
       event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
       event_full_contact_left, event_pull_off, event_branch_end
@@ -31,6 +32,7 @@ module wavyadhesion
       westergaard_gap
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
    public :: md_equilibrium, md_roots
+   public :: check_model, model_equilibrium, model_roots
    public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
       event_pull_off, event_branch_end
