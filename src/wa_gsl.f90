@@ -29,7 +29,7 @@ module wa_gsl
    public :: gsl_set_error_handler_off
    public :: gsl_integration_workspace_alloc, gsl_integration_workspace_free
    public :: gsl_integration_qaws_table_alloc, gsl_integration_qaws_table_free
-   public :: gsl_integration_qaws, gsl_integration_qag
+   public :: gsl_integration_qaws, gsl_integration_qag, gsl_integration_qags
 
    interface
       !> Carlson R_F(x, y, z).
@@ -145,6 +145,18 @@ module wa_gsl
          real(c_double), intent(out) :: result, abserr
          integer(c_int) :: status
       end function gsl_integration_qag
+
+      function gsl_integration_qags(f, a, b, epsabs, epsrel, limit, workspace, &
+            result, abserr) result(status) bind(C, name="gsl_integration_qags")
+         import :: gsl_function, c_double, c_size_t, c_ptr, c_int
+         type(gsl_function), intent(in) :: f
+         real(c_double), value :: a, b
+         real(c_double), value :: epsabs, epsrel
+         integer(c_size_t), value :: limit
+         type(c_ptr), value :: workspace
+         real(c_double), intent(out) :: result, abserr
+         integer(c_int) :: status
+      end function gsl_integration_qags
    end interface
 
 end module wa_gsl

@@ -20,7 +20,8 @@ program wavyadhesion_study
       ref_states_of
    use wa_study_dw, only: dw_variant, dw_solve, w_agm, w_carlson, w_tanh_sinh, w_qag
    use wa_study_md, only: md_variant, md_solve, psi_lib, psi_gauss, psi_qaws, psi_qag, &
-      psi_qags, init_rules
+      psi_qags
+   use wa_psi_methods, only: init_psi_rules
    implicit none
 
    !> One point of a work-precision set: inputs and the reference state.
@@ -47,7 +48,7 @@ program wavyadhesion_study
    type(c_funptr) :: old_handler
 
    old_handler = gsl_set_error_handler_off()
-   call init_rules()
+   call init_psi_rules()
    command = "all"
    out_dir = "build/study"
    quick = .false.
