@@ -172,6 +172,20 @@ contains
       type(wp_point), intent(in) :: pts(:)
       type(dw_variant), intent(in), optional :: v
       type(wp_row) :: row
+      row = measured_row(label, method, tol, xtol, library_call, pts, .true., dw=v)
+   end function dw_row
+
+   !> Accuracy on every point, then the best time per point over repeated passes.
+   function measured_row(label, method, tol, xtol, library_call, pts, is_dw, dw, md) result(row)
+      character(len=*), intent(in) :: label, method
+      real(wp), intent(in) :: tol, xtol
+      logical, intent(in) :: library_call
+      type(wp_point), intent(in) :: pts(:)
+      !> The model, and its solver variant (absent for the library's own call)
+      logical, intent(in) :: is_dw
+      type(dw_variant), intent(in), optional :: dw
+      type(md_variant), intent(in), optional :: md
+      type(wp_row) :: row
       real(wp) :: err(size(pts)), t0, best, total
       type(state_type) :: s
       integer :: i, st, nres, pass, nsum
@@ -179,12 +193,7 @@ contains
       row%library_call = library_call
       nsum = 0
       do i = 1, size(pts)                       ! accuracy pass (also warms up)
-         if (library_call) then
-            call dw_equilibrium(pts(i)%params, pts(i)%a_star, s, st)
-            nres = 0
-         else
-            call dw_solve(v, pts(i)%params, pts(i)%a_star, s, st, nres)
-         end if
+         call solve_point(pts(i), library_call, is_dw, s, st, nres, dw, md)
          nsum = nsum + nres
          err(i) = spec_error(s%c_star, s%p_star, pts(i)%c_ref, pts(i)%p_ref)
          if (st /= wa_ok .or. s%zone_case /= zone_inside) err(i) = huge(1.0_wp)
@@ -197,11 +206,7 @@ contains
       do while (pass < 3 .or. (total < 0.5_wp .and. pass < 200))
          t0 = seconds()
          do i = 1, size(pts)
-            if (library_call) then
-               call dw_equilibrium(pts(i)%params, pts(i)%a_star, s, st)
-            else
-               call dw_solve(v, pts(i)%params, pts(i)%a_star, s, st, nres)
-            end if
+            call solve_point(pts(i), library_call, is_dw, s, st, nres, dw, md)
          end do
          t0 = seconds() - t0
          best = min(best, t0)
@@ -212,7 +217,29 @@ contains
       call summarize(err, row)
       i = maxloc(err, dim=1)
       row%worst = [pts(i)%alpha, pts(i)%mu, pts(i)%a_star]
-   end function dw_row
+   end function measured_row
+
+   !> One equilibrium by the library's call or by the study's solver variant.
+   subroutine solve_point(pt, library_call, is_dw, s, st, nres, dw, md)
+      type(wp_point), intent(in) :: pt
+      logical, intent(in) :: library_call, is_dw
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: st, nres
+      type(dw_variant), intent(in), optional :: dw
+      type(md_variant), intent(in), optional :: md
+      nres = 0
+      if (library_call) then
+         if (is_dw) then
+            call dw_equilibrium(pt%params, pt%a_star, s, st)
+         else
+            call md_equilibrium(pt%params, pt%a_star, s, st)
+         end if
+      else if (is_dw) then
+         call dw_solve(dw, pt%params, pt%a_star, s, st, nres)
+      else
+         call md_solve(md, pt%params, pt%a_star, s, st, nres)
+      end if
+   end subroutine solve_point
 
    subroutine summarize(err, row)
       real(wp), intent(in) :: err(:)
@@ -331,46 +358,7 @@ contains
       type(wp_point), intent(in) :: pts(:)
       type(md_variant), intent(in), optional :: v
       type(wp_row) :: row
-      real(wp) :: err(size(pts)), t0, best, total
-      type(state_type) :: s
-      integer :: i, st, nres, pass, nsum
-      row%label = label; row%method = method; row%tol = tol; row%xtol = xtol
-      row%library_call = library_call
-      nsum = 0
-      do i = 1, size(pts)
-         if (library_call) then
-            call md_equilibrium(pts(i)%params, pts(i)%a_star, s, st)
-            nres = 0
-         else
-            call md_solve(v, pts(i)%params, pts(i)%a_star, s, st, nres)
-         end if
-         nsum = nsum + nres
-         err(i) = spec_error(s%c_star, s%p_star, pts(i)%c_ref, pts(i)%p_ref)
-         if (st /= wa_ok .or. s%zone_case /= zone_inside) err(i) = huge(1.0_wp)
-         if (err(i) == huge(1.0_wp)) row%n_fail = row%n_fail + 1
-      end do
-      row%mean_nres = real(nsum, wp)/size(pts)
-      best = huge(1.0_wp)
-      total = 0
-      pass = 0
-      do while (pass < 3 .or. (total < 0.5_wp .and. pass < 200))
-         t0 = seconds()
-         do i = 1, size(pts)
-            if (library_call) then
-               call md_equilibrium(pts(i)%params, pts(i)%a_star, s, st)
-            else
-               call md_solve(v, pts(i)%params, pts(i)%a_star, s, st, nres)
-            end if
-         end do
-         t0 = seconds() - t0
-         best = min(best, t0)
-         total = total + t0
-         pass = pass + 1
-      end do
-      row%time_us = 1e6_wp*best/size(pts)
-      call summarize(err, row)
-      i = maxloc(err, dim=1)
-      row%worst = [pts(i)%alpha, pts(i)%mu, pts(i)%a_star]
+      row = measured_row(label, method, tol, xtol, library_call, pts, .false., md=v)
    end function md_row
 
    ! =============================================================== the scipy peer
