@@ -18,7 +18,7 @@ module wa_branch
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
       curve_case2_load, curve_variable
-   use wa_models, only: check_model, model_roots, model_equilibrium
+   use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
    private
@@ -183,13 +183,13 @@ contains
       type(branch_type), intent(inout) :: branch
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      type(state_type) :: starts(8)
+      type(state_type) :: starts(max_model_roots)
       integer :: n_starts, k
 
       call model_roots(model, params, opts%a_start, starts, n_starts, status, errmsg)
       if (status /= wa_ok) return
       do k = 1, n_starts
-         if (visited(branch, starts(k))) cycle
+         if (visited(branch, starts(k), opts%a_start)) cycle
          call trace_piece(model, params, opts, starts(k), branch, status, errmsg)
          if (status /= wa_ok) return
          if (branch%a_star(branch%n) >= 0.5_wp) return
@@ -198,16 +198,21 @@ contains
          "a* = 1/2", status, errmsg)
    end subroutine cohesive_branch
 
-   !> Has a traced piece already started or ended at this state?
-   pure logical function visited(branch, s)
+   !> Has a traced piece already started at this start state, or ended on the start line
+   !> (a piece returning to a* -> 0 stops at a* <= a_start) in the same zone case and c*?
+   !> The zone case matters: near a mechanism change a case-1 root at c* = 1/2 - 1e-7
+   !> and the case-2 state sit closer in c* than any tolerance.
+   pure logical function visited(branch, s, a_start)
       type(branch_type), intent(in) :: branch
       type(state_type), intent(in) :: s
+      real(wp), intent(in) :: a_start
       integer :: i
       visited = .false.
       do i = 1, branch%n
          if (branch%event(i) /= event_branch_end) cycle
-         if (abs(branch%c_star(i) - s%c_star) <= 1.0e-6_wp*s%c_star .and. &
-            abs(branch%a_star(i) - s%a_star) <= 1.0e-3_wp*s%a_star) visited = .true.
+         if (branch%zone_case(i) /= s%zone_case) cycle
+         if (branch%a_star(i) > a_start*(1.0_wp + 1.0e-3_wp)) cycle
+         if (abs(branch%c_star(i) - s%c_star) <= 1.0e-6_wp*s%c_star) visited = .true.
       end do
    end function visited
 
