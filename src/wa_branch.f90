@@ -17,7 +17,7 @@ module wa_branch
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
-      curve_case2_load, curve_variable
+      curve_case2_load, curve_variable, curve_equilibrium
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
@@ -68,6 +68,8 @@ module wa_branch
    end type curve_point
 
    integer, parameter :: max_newton = 12
+   !> Width of the last stretch before a* = 1/2 that approach_half samples
+   real(wp), parameter :: end_width = 1.0e-4_wp
 
 contains
 
@@ -228,6 +230,7 @@ contains
       type(curve_point) :: p
       real(wp) :: h
       integer :: n0
+      logical :: sampled, handled
 
       n0 = branch%n
       p%a = start%a_star
@@ -241,7 +244,16 @@ contains
       end if
       call push(model, params, p, event_branch_end, 0, branch)
       h = opts%step_max
+      sampled = .false.
       do while (branch%n - n0 < opts%max_points)
+         if (p%zone_case == zone_inside .and. .not. sampled .and. p%t(1) > 0.0_wp .and. &
+            p%a >= 0.5_wp - end_width) then
+            sampled = .true.
+            call approach_half(model, params, p, branch, handled, status, errmsg)
+            if (status /= wa_ok) return
+            if (branch%event(branch%n) == event_branch_end) return
+            if (handled) cycle
+         end if
          if (p%zone_case == zone_inside) then
             call step_case1(model, params, opts, p, h, branch, status, errmsg)
          else
@@ -350,6 +362,73 @@ contains
       if (iters <= 2) h = min(opts%step_max, 1.5_wp*h)
       if (iters >= 5) h = 0.5_wp*h
    end subroutine step_case1
+
+   !> The last stretch to a* = 1/2 (1/2 - a* < end_width, travelling towards 1/2). a* holds
+   !> 1/2 - a* only to 5.5e-17 absolute, so near 1/2 the corrector's finite differences
+   !> fail (large mu: the zone reaches c* = 1/2 within 1e-8 of a* = 1/2) and its steps
+   !> crowd there. The curve is sampled instead by point solves at 1/2 - a* = b0 r^k,
+   !> following the state nearest the previous c*, and the switch to case 2 is located by
+   !> Brent on F(a*, y_max). Anything else (a failed solve, a jump of the zone variable,
+   !> P* turning, a switch not bracketed) hands the last sample back to the continuation
+   !> (handled = .false.).
+   subroutine approach_half(model, params, p, branch, handled, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(inout) :: p
+      type(branch_type), intent(inout) :: branch
+      logical, intent(out) :: handled
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: ratio = 0.5_wp, b_last = 1.0e-15_wp, max_y_jump = 2.0_wp
+      type(state_type) :: s, s_prev
+      type(curve_point) :: q
+      real(wp) :: b, a, slope, v_prev, v_here, a_switch
+      integer :: k, st
+
+      handled = .false.
+      status = wa_ok
+      s_prev = curve_state(model, params, p%a, p%y)
+      b = 0.5_wp - p%a
+      do k = 1, 200
+         b = max(ratio*b, 0.999_wp*b_last)
+         a = 0.5_wp - b
+         call curve_equilibrium(model, params, a, s_prev%c_star, s, st)
+         if (st /= wa_ok) exit
+         if (s%zone_case == zone_whole_period) then            ! c* reached 1/2 on the way
+            v_prev = curve_residual(model, params, p%a, curve_y_max)
+            v_here = curve_residual(model, params, a, curve_y_max)
+            if (v_prev*v_here > 0.0_wp) exit
+            a_switch = switch_abscissa(model, params, p%a, v_prev, a, v_here, st)
+            if (st /= wa_ok) exit
+            slope = (curve_case2_load(model, params, a_switch) - s_prev%p_star) &
+               /(a_switch - p%a)
+            q = case2_point(model, a_switch, 1.0_wp)
+            call push(model, params, q, event_switch, corner_extremum(slope, q%dp), branch)
+            p = q
+            handled = .true.
+            return
+         end if
+         if (s%zone_case /= zone_inside) exit
+         q%a = a
+         q%y = curve_variable(model, s)
+         q%zone_case = zone_inside
+         q%t = [1.0_wp, 0.0_wp]
+         slope = (s%p_star - s_prev%p_star)/(a - p%a)
+         if (abs(q%y - p%y) > max_y_jump .or. slope*p%dp <= 0.0_wp) exit
+         q%dp = slope
+         if (b <= b_last) then        ! still case 1: the switch is beyond double precision
+            call set_error(wa_numerical_error, "trace_branch: the interaction zone "// &
+               "reaches c* = 1/2 closer than 1e-15 to a* = 1/2, which double precision "// &
+               "does not resolve: mu is too large for this alpha (the JKR limit applies)", &
+               status, errmsg)
+            return
+         end if
+         call push(model, params, q, event_none, 0, branch)
+         p = q
+         s_prev = s
+      end do
+      call orient(model, params, p, [1.0_wp, 0.0_wp])       ! back to the continuation
+   end subroutine approach_half
 
    !> Predictor z + h t, then Newton on F = 0, t.(z - z_pred) = 0.
    pure subroutine corrector(model, params, p, h, q, iters, ok)
