@@ -499,7 +499,8 @@ contains
       real(wp), intent(out) :: f, g(2)
       real(wp) :: ha, hy
       f = curve_residual(model, params, a, y)
-      ha = 1.0e-7_wp*max(a, 1.0e-3_wp)
+      ! F varies on the scale of the distance to the nearer end of 0 < a* < 1/2
+      ha = 1.0e-7_wp*min(max(a, 1.0e-3_wp), 0.5_wp - a)
       if (a + ha >= 0.5_wp) ha = -ha
       hy = -1.0e-7_wp*max(abs(y), 1.0_wp)
       g(1) = (curve_residual(model, params, a + ha, y) - f)/ha
