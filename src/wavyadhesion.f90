@@ -1,4 +1,4 @@
-!> wavyadhesion: adhesive contact of a wavy elastic surface against a flat.
+!> The wavyadhesion library: adhesive contact of a wavy elastic surface against a flat.
 !> The umbrella module: `use wavyadhesion` gives the whole public API.
 module wavyadhesion
    use wa_kinds, only: wp
