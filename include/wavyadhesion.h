@@ -155,6 +155,11 @@ int wa_critical_sweep_msg(int model, double alpha, int n_mu, const double *mu,
    ("unknown status" for codes the library does not return). Do not free it. */
 const char *wa_status_message(int status);
 
+/* Version of the library, e.g. "0.2.0" (the same as the Fortran constant wa_version,
+   Python's wavyadhesion.__version__ and `wavyadhesion --version`): a static
+   NUL-terminated string, never NULL. Do not free it. */
+const char *wa_version(void);
+
 #ifdef __cplusplus
 }
 #endif

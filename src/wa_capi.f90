@@ -19,6 +19,7 @@ module wa_capi
    use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
+   use wa_release, only: wa_version
    implicit none
    private
 
@@ -27,6 +28,7 @@ module wa_capi
    public :: capi_trace_branch, capi_trace_branch_msg, capi_critical_forces, &
       capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
       capi_critical_sweep_msg
+   public :: capi_version
 
    !> Length of one status text, NUL included.
    integer, parameter :: text_len = 32
@@ -36,6 +38,10 @@ module wa_capi
    integer, parameter :: msg_len = 256
    !> States held before asking for a larger buffer (more roots than this are rare).
    integer, parameter :: roots_buffer = 64
+
+   !> NUL-terminated version text for wa_version(); immutable data like status_texts.
+   character(kind=c_char, len=len(wa_version) + 1), target, save, protected :: &
+      version_text = wa_version//c_null_char
 
    !> NUL-terminated status texts, same wording as wa_status::status_message, index =
    !> status code, last entry = unknown. Immutable data: nothing ever assigns to it (the
@@ -454,6 +460,13 @@ contains
       end if
    end function capi_status_message
 
+
+   !> const char *wa_version(void): the library's version, e.g. "0.2.0": a static
+   !> NUL-terminated text, never NULL.
+   function capi_version() result(text) bind(C, name="wa_version")
+      type(c_ptr) :: text
+      text = c_loc(version_text)
+   end function capi_version
 
    ! ---------------------------------------------------------------- internals
 

@@ -25,7 +25,7 @@ module wa_loadpath
    integer, parameter :: stage_loading = 1, stage_unloading = 2
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
-   !> Mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
+   !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
       mechanism_jump_case2 = 2, mechanism_snap = 3

@@ -760,7 +760,23 @@ static void test_branch_threads(void) {
                "branch job %d thread %d: results differ from the serial ones", j, t);
 }
 
+/* wa_version() is the text of the file VERSION (the one source of the version number). */
+static void test_version(void) {
+   char want[64] = "";
+   FILE *f = fopen("VERSION", "r");
+   const char *v = wa_version();
+   CHECK(f != NULL, "VERSION file readable from the repository root");
+   if (f != NULL) {
+      if (fgets(want, (int)sizeof want, f) == NULL) want[0] = '\0';
+      fclose(f);
+      want[strcspn(want, "\r\n \t")] = '\0';
+   }
+   CHECK(v != NULL && strcmp(v, want) == 0, "wa_version() = \"%s\", VERSION = \"%s\"",
+         v ? v : "(null)", want);
+}
+
 int main(void) {
+   test_version();
    test_closed_forms();
    test_status_messages();
    test_equilibrium_closed_forms();
