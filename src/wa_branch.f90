@@ -25,19 +25,26 @@ module wa_branch
 
    public :: branch_type, trace_options, trace_branch
    public :: event_none, event_fold, event_switch, event_jump_start, event_jump_end, &
-      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end
+      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end, &
+      event_a_turn
 
-   !> Event codes of SPEC section 7.
+   !> Event codes (the CLI's and C header's): 0 none, 1 fold of P*, 2 zone-case switch,
+   !> 3 jump start, 4 jump end, 5 full contact reached, 6 full contact left, 7 pull-off,
+   !> 8 branch end (first and last point of each piece), 9 a*-turn (two case-1 roots
+   !> merge: a* turns back, P* does not; not a fold, stability does not change there).
    integer, parameter :: event_none = 0, event_fold = 1, event_switch = 2, &
       event_jump_start = 3, event_jump_end = 4, event_full_contact_reached = 5, &
-      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8
+      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8, &
+      event_a_turn = 9
 
    !> A traced branch: points in the order of the curve (not necessarily of a*).
    type :: branch_type
       integer :: n = 0
       real(wp), allocatable :: a_star(:), c_star(:), p_star(:)
       integer, allocatable :: zone_case(:)
-      !> dP*/da* > 0 (stable under load control); false at extrema
+      !> Stable under load control (doc/theory.md, "Stability"): case 2 where dP*/da* > 0;
+      !> case 1 where D = dP*/da* dF/dy - dP*/dy dF/da* > 0, which changes sign only at
+      !> extrema of P* along the curve, never where a* alone turns. False at extrema.
       logical, allocatable :: stable(:)
       !> event code of the point (0 for ordinary points)
       integer, allocatable :: event(:)
@@ -65,6 +72,8 @@ module wa_branch
       real(wp) :: t(2) = 0.0_wp
       !> dP*/dsigma along the direction of travel
       real(wp) :: dp = 0.0_wp
+      !> D = P_a F_y - P_y F_a (case 1): > 0 where the state is stable under load control
+      real(wp) :: det = 0.0_wp
    end type curve_point
 
    integer, parameter :: max_newton = 12
@@ -351,7 +360,7 @@ contains
       else if (p%t(1)*q%t(1) < 0.0_wp) then         ! a* turns back: stability flips
          call locate_zero(model, params, p, h, 2, f, status, errmsg)
          if (status /= wa_ok) return
-         call push(model, params, f, event_none, 2, branch)
+         call push(model, params, f, event_a_turn, 2, branch)
       end if
       if (q%a <= opts%a_start .or. q%a >= 0.5_wp - 1.0e-12_wp) then
          call push(model, params, q, event_branch_end, 0, branch)
@@ -416,6 +425,7 @@ contains
          slope = (s%p_star - s_prev%p_star)/(a - p%a)
          if (abs(q%y - p%y) > max_y_jump .or. slope*p%dp <= 0.0_wp) exit
          q%dp = slope
+         q%det = p%det                 ! no extremum of P* since p: stability carries over
          if (b <= b_last) then        ! still case 1: the switch is beyond double precision
             call set_error(wa_numerical_error, "trace_branch: the interaction zone "// &
                "reaches c* = 1/2 closer than 1e-15 to a* = 1/2, which double precision "// &
@@ -520,6 +530,7 @@ contains
       q%t = q%t/norm2(q%t)
       if (dot_product(q%t, previous) < 0.0_wp) q%t = -q%t
       q%dp = pa*q%t(1) + py*(q%t(2)/w)
+      q%det = pa*fy - py*fa
    end subroutine orient
 
    !> Five-point differences of F and P* in a* and y (one-sided where the domain ends):
@@ -723,6 +734,7 @@ contains
       type(curve_point), intent(in) :: q
       type(branch_type), intent(inout) :: branch
       type(state_type) :: s
+      logical :: stable
       if (q%zone_case == zone_inside) then
          s = curve_state(model, params, q%a, q%y)
       else
@@ -732,8 +744,12 @@ contains
          s%p_star = curve_case2_load(model, params, q%a)
          s%zone_case = q%zone_case
       end if
-      call append(branch, s, q%dp*sign(1.0_wp, q%t(1)) > 0.0_wp .and. extremum == 0 &
-         .and. q%t(1) /= 0.0_wp, event, extremum)
+      if (q%zone_case == zone_inside) then
+         stable = q%det > 0.0_wp
+      else                                             ! one degree of freedom: dP*/da* > 0
+         stable = q%dp*sign(1.0_wp, q%t(1)) > 0.0_wp .and. q%t(1) /= 0.0_wp
+      end if
+      call append(branch, s, stable .and. abs(extremum) /= 1, event, extremum)
    end subroutine push
 
    subroutine append(branch, s, stable, event, extremum)

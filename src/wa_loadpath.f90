@@ -112,7 +112,7 @@ contains
       call add(path, stage_loading, event_jump_start, 0.0_wp, 0.0_wp, 0.0_wp)
       call vertex(loop, 0.0_wp, 0.0_wp)
       seg = landing_segment(branch, 0.0_wp, 0.0_wp, +1)
-      if (branch%p_star(1) >= 0.0_wp .and. rising(branch, 1)) seg = 1   ! in contact from a* -> 0
+      if (branch%p_star(1) >= 0.0_wp .and. stable_segment(branch, 1)) seg = 1   ! in contact from a* -> 0
       load = 0.0_wp
       path%fc_mechanism = mechanism_snap
       do
@@ -133,8 +133,8 @@ contains
          call add(path, stage_loading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
          k = piece_end(branch, seg, +1)              ! rise while the piece is stable
-         call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) > &
-            branch%a_star(seg)), k)
+         call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) > &
+            branch%p_star(seg)), k)
          if (branch%a_star(k) >= 0.5_wp) then
             path%p_fc = branch%p_star(k)
             path%fc_mechanism = mechanism_gradual
@@ -173,12 +173,12 @@ contains
       call add(path, stage_unloading, event_full_contact_left, 0.5_wp, 0.5_wp, load)
       call vertex(loop, 0.5_wp, load)
       seg = 0
-      if (rising(branch, k - 1)) seg = k - 1         ! else the end itself is a minimum
+      if (stable_segment(branch, k - 1)) seg = k - 1  ! else the end itself is a minimum
       do
          if (seg > 0) then                            ! fall while the piece is stable
             k = piece_end(branch, seg, -1)
-            call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) < &
-               branch%a_star(seg)), k)
+            call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) < &
+               branch%p_star(seg)), k)
             if (branch%event(k) == event_branch_end) then   ! shrinks gradually to a* -> 0
                call curve_equilibrium(model, params, a_limit, branch%c_star(k), s, status, errmsg)
                if (status /= wa_ok) return
@@ -275,22 +275,21 @@ contains
       end function mechanism_at
    end subroutine mechanism_change
 
-   !> From the stable segment [seg, seg+1], walk along the branch toward larger a*
-   !> (dir = +1, rising load) or smaller a* (dir = -1) while the segments stay stable;
-   !> the last point reached ends the stable piece: a fold, a corner, a point where a*
-   !> turns back, or an end of the branch.
+   !> From the stable segment [seg, seg+1], walk along the branch toward rising load
+   !> (dir = +1, loading) or falling load (dir = -1) while the segments stay stable; the
+   !> last point reached ends the stable piece: a fold, a corner extremum or an end of the
+   !> branch. An a*-turn does not end it: stability changes only at extrema of P*.
    pure integer function piece_end(branch, seg, dir)
       type(branch_type), intent(in) :: branch
       integer, intent(in) :: seg, dir
       integer :: step, nxt
-      step = merge(1, -1, (branch%a_star(seg + 1) - branch%a_star(seg))*dir > 0.0_wp)
+      step = merge(1, -1, (branch%p_star(seg + 1) - branch%p_star(seg))*dir > 0.0_wp)
       piece_end = merge(seg + 1, seg, step == 1)
       do
          nxt = piece_end + step
          if (nxt < 1 .or. nxt > branch%n) exit
-         if (.not. joined(branch, min(piece_end, nxt))) exit
-         if (.not. rising(branch, min(piece_end, nxt))) exit
-         if ((branch%a_star(nxt) - branch%a_star(piece_end))*dir <= 0.0_wp) exit   ! a corner
+         if (.not. stable_segment(branch, min(piece_end, nxt))) exit
+         if ((branch%p_star(nxt) - branch%p_star(piece_end))*dir <= 0.0_wp) exit  ! extremum
          piece_end = nxt
       end do
    end function piece_end
@@ -314,7 +313,7 @@ contains
       landing_segment = 0
       best = huge(1.0_wp)
       do i = 1, branch%n - 1
-         if (.not. rising(branch, i)) cycle
+         if (.not. stable_segment(branch, i)) cycle
          if (.not. (min(branch%p_star(i), branch%p_star(i + 1)) <= load .and. &
             load <= max(branch%p_star(i), branch%p_star(i + 1)))) cycle
          a_mid = 0.5_wp*(branch%a_star(i) + branch%a_star(i + 1))
@@ -326,13 +325,14 @@ contains
       end do
    end function landing_segment
 
-   !> Segment [i, i+1] is on a stable piece: P* and a* increase together.
-   pure logical function rising(branch, i)
+   !> Segment [i, i+1] lies on a stable piece (its ends are stable, or one end is the
+   !> extremum or corner that bounds the piece and the other is stable), P* not constant.
+   pure logical function stable_segment(branch, i)
       type(branch_type), intent(in) :: branch
       integer, intent(in) :: i
-      rising = joined(branch, i) .and. (branch%p_star(i + 1) - branch%p_star(i)) &
-         *(branch%a_star(i + 1) - branch%a_star(i)) > 0.0_wp
-   end function rising
+      stable_segment = joined(branch, i) .and. branch%p_star(i + 1) /= branch%p_star(i) &
+         .and. (branch%stable(i) .or. branch%stable(i + 1))
+   end function stable_segment
 
    !> The equilibrium on segment [seg, seg+1] whose load is `load` (Brent in a*).
    subroutine solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
