@@ -637,8 +637,12 @@ contains
       real(wp), intent(in) :: h
       real(wp) :: a_next
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
-      ! F(a*, y_max) changes sign across the a* where the curve reaches y_max
+      ! F(a*, y_max) changes sign across the a* where the curve reaches y_max; but it also
+      ! changes where another sheet is born at y_max (MD: a second case-1 root and case 2
+      ! appear together), so the curve itself must be heading into y_max within the step
       crosses_case2 = p%t(2) > 0.0_wp .and. &
+         curve_weight(model)*(curve_y_max - p%y) <= h*p%t(2)
+      if (crosses_case2) crosses_case2 = &
          curve_residual(model, params, a_next, curve_y_max) &
          *curve_residual(model, params, p%a, curve_y_max) <= 0.0_wp
    end function crosses_case2
@@ -668,10 +672,73 @@ contains
       q%zone_case = zone_inside
       call orient(model, params, q, p%t)
       slope_before = q%dp
+      ! P* turned between the last point and the switch, where the curve runs steeply up
+      ! to c* = 1/2 and the corrector cannot follow: locate that fold by the point solver
+      if (p%dp*slope_before < 0.0_wp) then
+         call fold_before_switch(model, params, p, q%a, status, errmsg, branch)
+         if (status /= wa_ok) return
+      end if
       q = case2_point(model, q%a, dir)
       call push(model, params, q, event_switch, corner_extremum(slope_before, q%dp), branch)
       p = q
    end subroutine switch_to_case2
+
+   !> The extremum of P* on the case-1 curve between p and the switch at a_switch, by
+   !> golden sections on P*(a*) of the state nearest p's c* (to 1e-12 relative in a*),
+   !> pushed as a fold.
+   subroutine fold_before_switch(model, params, p, a_switch, status, errmsg, branch)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: a_switch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type), intent(inout) :: branch
+      real(wp), parameter :: golden = 0.3819660112501051518_wp
+      type(state_type) :: s, s_hint
+      type(curve_point) :: f
+      real(wp) :: lo, hi, x1, x2, f1, f2, sgn
+      integer :: iter
+
+      s_hint = curve_state(model, params, p%a, p%y)
+      sgn = sign(1.0_wp, p%dp)                 ! +1: a maximum of P*, -1: a minimum
+      lo = min(p%a, a_switch)
+      hi = max(p%a, a_switch)
+      x1 = lo + golden*(hi - lo)
+      x2 = hi - golden*(hi - lo)
+      f1 = sgn*load_at(x1)
+      f2 = sgn*load_at(x2)
+      do iter = 1, 200
+         if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
+         if (f1 > f2) then
+            hi = x2; x2 = x1; f2 = f1
+            x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
+         else
+            lo = x1; x1 = x2; f1 = f2
+            x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
+         end if
+      end do
+      if (status /= wa_ok) return
+      call curve_equilibrium(model, params, 0.5_wp*(lo + hi), s_hint%c_star, s, status, errmsg)
+      if (status /= wa_ok) return
+      if (s%zone_case /= zone_inside) then
+         call set_error(wa_numerical_error, "trace_branch: the fold before a case switch "// &
+            "could not be located", status, errmsg)
+         return
+      end if
+      f%a = s%a_star
+      f%y = curve_variable(model, s)
+      f%zone_case = zone_inside
+      f%t = p%t
+      call push(model, params, f, event_fold, nint(sgn), branch)
+   contains
+      real(wp) function load_at(a)
+         real(wp), intent(in) :: a
+         type(state_type) :: st
+         call curve_equilibrium(model, params, a, s_hint%c_star, st, status, errmsg)
+         load_at = st%p_star
+      end function load_at
+   end subroutine fold_before_switch
 
    !> The a* where F(a*, y_max) = 0 between a1 and a2 (case switch, to ~1e-15).
    function switch_abscissa(model, params, a1, v1, a2, v2, status, errmsg) result(a)

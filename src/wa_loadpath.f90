@@ -23,6 +23,8 @@ module wa_loadpath
    public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
+   !> Bound on the jumps of one loading or unloading (a path holds at most 64 events)
+   integer, parameter :: max_jumps = 15
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
    !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
@@ -105,7 +107,7 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: s
-      integer :: k, seg
+      integer :: k, seg, jumps
       real(wp) :: load
 
       status = wa_ok
@@ -115,7 +117,7 @@ contains
       if (branch%p_star(1) >= 0.0_wp .and. stable_segment(branch, 1)) seg = 1   ! in contact from a* -> 0
       load = 0.0_wp
       path%fc_mechanism = mechanism_snap
-      do
+      do jumps = 1, max_jumps
          if (seg == 0) then                          ! nothing stable ahead: snap to full contact
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, load)
             call vertex(loop, 0.5_wp, load)
@@ -141,11 +143,14 @@ contains
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, path%p_fc)
             return
          end if
+         if (.not. (branch%p_star(k) > load)) exit  ! each stable piece must raise the load
          load = branch%p_star(k)
          path%fc_mechanism = jump_from(branch%zone_case(k))
          call add(path, stage_loading, event_jump_start, branch%a_star(k), branch%c_star(k), load)
          seg = landing_segment(branch, branch%a_star(k), load, +1)
       end do
+      call set_error(wa_numerical_error, "load_path: loading makes no progress along the "// &
+         "traced branch (a stable piece that does not raise the load)", status, errmsg)
    end subroutine loading
 
    !> Leave full contact at P*(a* -> 1/2), fall along stable pieces, jump at every
@@ -159,7 +164,7 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: s
-      integer :: k, seg
+      integer :: k, seg, jumps
       real(wp) :: load
 
       status = wa_ok
@@ -174,7 +179,7 @@ contains
       call vertex(loop, 0.5_wp, load)
       seg = 0
       if (stable_segment(branch, k - 1)) seg = k - 1  ! else the end itself is a minimum
-      do
+      do jumps = 1, max_jumps
          if (seg > 0) then                            ! fall while the piece is stable
             k = piece_end(branch, seg, -1)
             call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) < &
@@ -187,6 +192,7 @@ contains
                call vertex(loop, 0.0_wp, path%p_pf)
                return
             end if
+            if (.not. (branch%p_star(k) < load)) exit  ! each stable piece must lower it
             load = branch%p_star(k)
          end if
          call add(path, stage_unloading, event_jump_start, branch%a_star(k), &
@@ -206,6 +212,8 @@ contains
          call add(path, stage_unloading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
       end do
+      call set_error(wa_numerical_error, "load_path: unloading makes no progress along the "// &
+         "traced branch (a stable piece that does not lower the load)", status, errmsg)
    end subroutine unloading
 
    pure integer function jump_from(zone_case)
