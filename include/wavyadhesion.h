@@ -122,9 +122,10 @@ int wa_roots_msg(int model, double alpha, double mu, double a_star, int capacity
    switch as a point of its own (event[] = WA_EVENT_FOLD, WA_EVENT_SWITCH). The curve can
    come in pieces (DW, MD: a piece that returns to a* -> 0, then the one that reaches
    a* = 1/2): each piece starts and ends with a WA_EVENT_BRANCH_END point, so the first
-   and the last point are WA_EVENT_BRANCH_END, the last at a* = 1/2, and a branch of k
-   pieces has 2 (k - 1) more BRANCH_END points inside, in pairs at consecutive indices
-   (the end of one piece, the start of the next). stable[] is 1 where d(P*)/d(a*) > 0
+   and the last point are WA_EVENT_BRANCH_END, the last at a* = 1/2 (JKR: 1/2 - 1e-9,
+   where P* is still finite), and a branch of k pieces has 2 (k - 1) more BRANCH_END
+   points inside, in pairs at consecutive indices (the end of one piece, the start of
+   the next). stable[] is 1 where d(P*)/d(a*) > 0
    (stable under load control), 0 elsewhere and at folds. *n_points receives the number
    of points. When it exceeds `capacity` the first `capacity` points are written,
    nothing beyond, and WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays
