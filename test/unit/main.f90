@@ -39,6 +39,7 @@ program tester
    if (wanted("branch")) then
       call collect_branch(tests); call run_suite("branch", tests, npass, nfail, only)
    end if
+   if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
    if (nfail > 0 .or. npass == 0) error stop 1
 
