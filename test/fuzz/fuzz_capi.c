@@ -1,4 +1,5 @@
-/* Contract fuzzer of the C interface: `fpm test fuzz` (see doc/testing.md).
+/* Contract fuzzer of the C interface: `fpm test --profile release --target fuzz`, part of
+ * `fpm test` (see doc/testing.md).
  *
  * Calls every function of include/wavyadhesion.h with random and adversarial inputs
  * (NaN, +-Inf, +-0, denormals, huge and tiny values, out-of-range model codes, NULL
@@ -115,6 +116,7 @@ typedef struct {
    long viol[N_KIND];
    long viol_fn[N_KIND][N_FN];
    long viol_printed[N_KIND][N_FN];
+   long failed_valid[4][N_FAMILY][6]; /* failure-in-domain by model, family, status */
 } shared_t;
 
 static shared_t *shm;
@@ -297,8 +299,8 @@ static void violation(const call_t *c, int kind, const char *fmt, ...) {
    va_start(ap, fmt);
    vprintf(fmt, ap);
    va_end(ap);
-   printf("\n   repro: %s\n   replay: fuzz --seed %llu --only %ld\n", c->repro, opt_seed,
-          c->index);
+   printf("\n   repro: %s\n   replay: fpm test --profile release --target fuzz -- --seed %llu "
+          "--only %ld\n", c->repro, opt_seed, c->index);
    fflush(stdout);
 }
 
@@ -557,7 +559,10 @@ static void check_status(const call_t *c, int st, int allowed_mask, int invalid)
    if (!invalid && st == WA_INVALID_ARGUMENT)
       violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT");
    if (!invalid && (st == WA_NO_SOLUTION || st == WA_NOT_CONVERGED || st == WA_NUMERICAL_ERROR))
+   {
+      shm->failed_valid[c->model][c->family][st]++;
       violation(c, K_FAILED_VALID, "status %d (%s)", st, wa_status_message(st));
+   }
 }
 
 static void count_status(const call_t *c, int st) {
@@ -965,6 +970,7 @@ static void run_closed(const call_t *c) {
    lib_call();
    if (c->family == F_WESTERGAARD_LOAD) {
       p = wa_westergaard_load(a);
+      if (opt_only >= 0) printf("call %ld: %s\n   -> %.17g\n", c->index, c->repro, p);
       if (!valid_a(a)) {
          if (!isnan(p)) violation(c, K_VALUE, "P %.17g outside [0, 1/2] (want NaN)", p);
          return;
@@ -975,6 +981,7 @@ static void run_closed(const call_t *c) {
       return;
    }
    p = wa_jkr_load(c->alpha, a);
+   if (opt_only >= 0) printf("call %ld: %s\n   -> %.17g\n", c->index, c->repro, p);
    if (!valid_a(a) || !(c->alpha >= 0) || !isfinite(c->alpha)) {
       if (!isnan(p)) violation(c, K_VALUE, "P %.17g outside the domain (want NaN)", p);
       return;
@@ -1308,6 +1315,18 @@ int main(int argc, char **argv) {
             printf("  %8s   %ld in %s%s\n", "", shm->viol_fn[k][fn], family_name[fn / 2],
                    fn % 2 ? "_msg" : "");
       if (kind_severe[k]) severe += 1;
+   }
+   if (shm->viol[K_FAILED_VALID]) {
+      static const char *mname[4] = {"westergaard", "jkr", "dw", "md"};
+      int m, f;
+      printf("  failure-in-domain by model and function (statuses 2 3 5):\n");
+      for (m = 0; m < 4; m++)
+         for (f = 0; f < N_FAMILY; f++) {
+            long *v = shm->failed_valid[m][f];
+            if (v[2] + v[3] + v[5])
+               printf("  %12s %-20s %6ld %6ld %6ld\n", mname[m], family_name[f], v[2], v[3],
+                      v[5]);
+         }
    }
    if (severe == 0) printf("  no severe violation\n");
    printf("fuzz: %s\n", severe ? "FAILED (severe violations)" : "passed");
