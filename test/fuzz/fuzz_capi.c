@@ -49,20 +49,26 @@
 
 #include "../../include/wavyadhesion.h"
 
+/* wa_version() joined the header after the other functions: declared weak here, so the
+   fuzzer also builds against a library without it (then it is skipped). */
+#pragma weak wa_version
+const char *wa_version(void);
+
 /* ------------------------------------------------------------------ functions */
 
 enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
-   F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, N_FAMILY
+   F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION, N_FAMILY
 };
 /* Function ids: a family and whether the _msg variant is called. */
 #define N_FN (2 * N_FAMILY)
 static const char *family_name[N_FAMILY] = {
    "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
-   "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message"};
-static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0};
+   "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
+   "wa_version"};
+static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md). */
-static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6};
+static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1};
 
 /* ----------------------------------------------------------- violation kinds */
 
@@ -345,6 +351,9 @@ static void make_repro(call_t *c) {
       break;
    case F_STATUS_MESSAGE:
       sprintf(c->repro, "wa_status_message(%s)", ci(a1, c->code));
+      break;
+   case F_VERSION:
+      strcpy(c->repro, "wa_version()");
       break;
    case F_EQUILIBRIUM:
       sprintf(c->repro, "wa_equilibrium%s(%d, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
@@ -1019,6 +1028,21 @@ static void run_status_message(const call_t *c) {
    if (wa_status_message(c->code) != m) violation(c, K_NONDET, "another pointer");
 }
 
+/* wa_version: a static "MAJOR.MINOR.PATCH..." string, the same pointer every time. */
+static void run_version(const call_t *c) {
+   const char *v;
+   int major, minor, patch;
+   if (!wa_version) return; /* a library without it */
+   lib_call();
+   v = wa_version();
+   if (v == NULL || strlen(v) > 64 || sscanf(v, "%d.%d.%d", &major, &minor, &patch) != 3) {
+      violation(c, K_VALUE, "'%s'", v ? v : "(NULL)");
+      return;
+   }
+   lib_call();
+   if (wa_version() != v) violation(c, K_NONDET, "another pointer");
+}
+
 /* Cross checks after a successful call (extra library calls, same watchdog). */
 static void cross_check(const call_t *c, int st, rng_t *r) {
    if (c->family == F_ROOTS && st == WA_OK && !(c->null_mask & 15u) && c->capacity > 0 &&
@@ -1091,6 +1115,8 @@ static void run_one(long index) {
       run_closed(&c);
    } else if (c.family == F_STATUS_MESSAGE) {
       run_status_message(&c);
+   } else if (c.family == F_VERSION) {
+      run_version(&c);
    } else {
       invalid = is_invalid(&c);
       st = run_family(&c, c.msg);
