@@ -485,6 +485,9 @@ contains
       integer :: stat
 
       msg = ""
+      call put_nan(c_star)
+      call put_nan(p_star)
+      call put_int(zone_case, 0)
       if (.not. (c_associated(c_star) .and. c_associated(p_star) .and. &
             c_associated(zone_case))) then
          call set_error(wa_invalid_argument, "c_star, P_star and zone_case must not be NULL", &
@@ -495,9 +498,6 @@ contains
       call c_f_pointer(c_star, c_out)
       call c_f_pointer(p_star, p_out)
       call c_f_pointer(zone_case, z_out)
-      c_out = ieee_value(c_out, ieee_quiet_nan)
-      p_out = c_out
-      z_out = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call model_equilibrium(int(model), params, a_star, state, stat, msg)
@@ -524,22 +524,24 @@ contains
       integer :: stat, n
 
       msg = ""
+      call put_int(n_roots, 0)
       call check_roots_pointers(capacity, c_star, p_star, zone_case, n_roots, stat, msg)
       if (stat /= wa_ok) then
          status = int(stat, c_int)
          return
       end if
       call c_f_pointer(n_roots, n_out)
-      n_out = 0
       n = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) then
          allocate (states(min(int(capacity), roots_buffer)))
          call model_roots(int(model), params, a_star, states, n, stat, msg)
-         if (stat == wa_capacity_too_small .and. n <= capacity) then   ! our buffer was short
+         if (stat == wa_capacity_too_small .and. size(states) < min(n, int(capacity))) then
+            ! our buffer was shorter than the caller's: solve again with room for
+            ! min(n, capacity) states (the count does not change: the solve is deterministic)
             deallocate (states)
-            allocate (states(n))
+            allocate (states(min(n, int(capacity))))
             msg = ""
             call model_roots(int(model), params, a_star, states, n, stat, msg)
          end if
@@ -607,6 +609,7 @@ contains
       integer :: stat, m
 
       msg = ""
+      call put_int(n_points, 0)
       call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
          "a_star, c_star, P_star, zone_case, stable and event", stat, msg)
       if (stat /= wa_ok) then
@@ -614,10 +617,10 @@ contains
          return
       end if
       call c_f_pointer(n_points, n_out)
-      n_out = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          m = min(branch%n, int(capacity))
          call store_reals(reals(1), branch%a_star(1:m))
@@ -646,6 +649,8 @@ contains
       integer :: stat
 
       msg = ""
+      call put_nan(p_fc)
+      call put_nan(p_pf)
       if (.not. (c_associated(p_fc) .and. c_associated(p_pf))) then
          call set_error(wa_invalid_argument, "P_fc and P_pf must not be NULL", stat, msg)
          status = int(stat, c_int)
@@ -653,11 +658,10 @@ contains
       end if
       call c_f_pointer(p_fc, fc_out)
       call c_f_pointer(p_pf, pf_out)
-      fc_out = ieee_value(fc_out, ieee_quiet_nan)
-      pf_out = fc_out
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call critical_forces(int(model), params, fc, pf, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          fc_out = fc
          pf_out = pf
@@ -681,6 +685,9 @@ contains
       integer :: stat, m
 
       msg = ""
+      call put_int(n_events, 0)
+      call put_nan(p_fc)
+      call put_nan(p_pf)
       call check_outputs("n_events", n_events, "capacity", capacity, [ints, reals], &
          "stage, event, a_star, c_star and P_star", stat, msg)
       if (stat == wa_ok .and. .not. (c_associated(p_fc) .and. c_associated(p_pf))) &
@@ -692,12 +699,10 @@ contains
       call c_f_pointer(n_events, n_out)
       call c_f_pointer(p_fc, fc_out)
       call c_f_pointer(p_pf, pf_out)
-      n_out = 0
-      fc_out = ieee_value(fc_out, ieee_quiet_nan)
-      pf_out = fc_out
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call load_path(int(model), params, path, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          m = min(path%n, int(capacity))
          call store_ints(ints(1), path%stage(1:m))
@@ -731,6 +736,12 @@ contains
       character(len=12) :: text
 
       msg = ""
+      if (n_mu > 0) then                      ! the failure values, in every non-NULL array
+         call put_nans(reals(1), n_mu)
+         call put_nans(reals(2), n_mu)
+         call put_ints(ints(1), n_mu, -1)
+         call put_ints(ints(2), n_mu, -1)
+      end if
       call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints], &
          "mu, P_fc, P_pf, fc_mechanism and pf_mechanism", stat, msg)
       if (stat /= wa_ok) then
@@ -748,10 +759,6 @@ contains
       call c_f_pointer(reals(2), pf_out, [n_mu])
       call c_f_pointer(ints(1), fcm_out, [n_mu])
       call c_f_pointer(ints(2), pfm_out, [n_mu])
-      fc_out = ieee_value(1.0_c_double, ieee_quiet_nan)
-      pf_out = fc_out
-      fcm_out = -1
-      pfm_out = -1
       do i = 1, int(n_mu)
          if (stat /= wa_ok) exit
          call new_params(alpha, mu_in(i), params, stat, msg)
@@ -763,6 +770,7 @@ contains
       if (stat == wa_ok) then
          allocate (p_fc(n_mu), p_pf(n_mu), fc_mech(n_mu), pf_mech(n_mu))
          call critical_sweep(int(model), alpha, mu_in, p_fc, p_pf, fc_mech, pf_mech, stat, msg)
+         call internal_capacity(stat, msg)
          if (stat == wa_ok) then
             fc_out = p_fc
             pf_out = p_pf
@@ -828,6 +836,57 @@ contains
          what//" "//trim(t_n)//" "//items//" (the first "//trim(t_cap)//" were written)", &
          stat, msg)
    end subroutine too_small
+
+   !> A wa_capacity_too_small from the numerics below a function whose only capacity is
+   !> the caller's (checked here) is an internal buffer running short: report it as
+   !> wa_numerical_error, so the caller never reads it as "your array is too small".
+   subroutine internal_capacity(stat, msg)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: msg
+      if (stat /= wa_capacity_too_small) return
+      stat = wa_numerical_error
+      msg = "internal buffer too small: "//msg
+   end subroutine internal_capacity
+
+   !> *ptr = NaN unless ptr is NULL (a failure's value, written before any check).
+   subroutine put_nan(ptr)
+      type(c_ptr), intent(in) :: ptr
+      real(c_double), pointer :: out
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out)
+      out = ieee_value(out, ieee_quiet_nan)
+   end subroutine put_nan
+
+   !> *ptr = value unless ptr is NULL.
+   subroutine put_int(ptr, value)
+      type(c_ptr), intent(in) :: ptr
+      integer, intent(in) :: value
+      integer(c_int), pointer :: out
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out)
+      out = int(value, c_int)
+   end subroutine put_int
+
+   !> ptr[0..n-1] = NaN unless ptr is NULL (n > 0).
+   subroutine put_nans(ptr, n)
+      type(c_ptr), intent(in) :: ptr
+      integer(c_int), intent(in) :: n
+      real(c_double), pointer :: out(:)
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out, [n])
+      out = ieee_value(1.0_c_double, ieee_quiet_nan)
+   end subroutine put_nans
+
+   !> ptr[0..n-1] = value unless ptr is NULL (n > 0).
+   subroutine put_ints(ptr, n, value)
+      type(c_ptr), intent(in) :: ptr
+      integer(c_int), intent(in) :: n
+      integer, intent(in) :: value
+      integer(c_int), pointer :: out(:)
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out, [n])
+      out = int(value, c_int)
+   end subroutine put_ints
 
    !> Copy values into a caller's double array (nothing when there are none).
    subroutine store_reals(ptr, values)

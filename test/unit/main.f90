@@ -43,6 +43,7 @@ program tester
    if (wanted("robustness")) then
       call collect_robustness(tests); call run_suite("robustness", tests, npass, nfail, only)
    end if
+   if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
    if (nfail > 0 .or. npass == 0) error stop 1
 
