@@ -16,7 +16,7 @@ module wavyadhesion
    use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
       event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
-      event_full_contact_left, event_pull_off, event_branch_end
+      event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
@@ -36,7 +36,7 @@ module wavyadhesion
    public :: check_model, model_equilibrium, model_roots
    public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
-      event_pull_off, event_branch_end
+      event_pull_off, event_branch_end, event_a_turn
    public :: path_type, load_path, critical_forces, critical_sweep, mechanism_change, &
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap
