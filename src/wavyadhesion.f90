@@ -6,7 +6,7 @@ module wavyadhesion
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    use wa_params, only: params_type, scales_type, new_params, dimensional_params, &
-      reduced_modulus
+      reduced_modulus, alpha_min, alpha_max, mu_min, mu_max
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_kernels, only: westergaard_load, jkr_load, westergaard_pressure, &
@@ -27,6 +27,7 @@ module wavyadhesion
    public :: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    public :: params_type, scales_type, new_params, dimensional_params, reduced_modulus
+   public :: alpha_min, alpha_max, mu_min, mu_max
    public :: state_type, zone_inside, zone_whole_period, zone_full_contact
    public :: model_westergaard, model_jkr, model_dw, model_md
    public :: westergaard_load, jkr_load, westergaard_pressure, westergaard_displacement, &
