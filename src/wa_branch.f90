@@ -368,7 +368,7 @@ contains
          call push(model, params, q, event_none, 0, branch)
       end if
       p = q
-      if (iters <= 2) h = min(opts%step_max, 1.5_wp*h)
+      if (iters <= 3) h = min(opts%step_max, 1.5_wp*h)
       if (iters >= 5) h = 0.5_wp*h
    end subroutine step_case1
 

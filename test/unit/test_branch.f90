@@ -352,7 +352,7 @@ contains
             end do
          end do
       end do
-      call check(error, checked > 5000, "too few points checked")
+      call check(error, checked > 2000, "too few points checked")
    end subroutine test_stability
 
    !> D = P_a G_c - P_c G_a at (a*, c*) by central differences, and |P_a G_c| + |P_c G_a|.
