@@ -40,7 +40,11 @@ contains
          if (hi > huge(hi)) bad = bad .or. .not. ieee_is_finite(x)
       end if
       if (bad) then
-         write (xtext, '(es12.5)') x
+         if (abs(x) >= 1.0e100_wp .or. (x /= 0.0_wp .and. abs(x) < 1.0e-99_wp)) then
+            write (xtext, '(es13.5e3)') x      ! 3-digit exponent: 1.79769E+308
+         else
+            write (xtext, '(es12.5)') x
+         end if
          call set_error(wa_invalid_argument, name//" = "//trim(adjustl(xtext))// &
             " is outside its valid range "//range_text, status, errmsg)
       else
