@@ -310,9 +310,9 @@ contains
                if (stat == wa_ok) exit
             end do
             if (stat /= wa_ok) then
-               call set_error(stat, "mechanism change located only to ["//real_text(lo)// &
-                  ", "//real_text(hi)//"]: the load path fails inside it ("//trim(msg)//")", &
-                  status, errmsg)
+               call set_error(stat, "mechanism change not located further than ["// &
+                  real_text(lo)//", "//real_text(hi)//"]: the load path fails at every "// &
+                  "trial mu inside ("//trim(msg)//")", status, errmsg)
                done = .true.
                exit bisect
             end if
