@@ -4,47 +4,46 @@ and a 10^5-element ``equilibrium("dw", 0.3, 1.0, a)``, a 1-element ``jkr_load`` 
 
 Usage (after ``pip install ./python``)::
 
-    python python/benchmarks/bench_chunking.py [--repeats 7]
+    python python/benchmarks/bench_chunking.py [--repeats 9]
+
+To compare with a build before chunking, run it alternately in two virtual environments
+and keep the best of several runs (the timings of a shared machine vary by 2x).
 """
 
 import argparse
-import time
+import timeit
 
 import numpy as np
 
 import wavyadhesion as wa
 
 
-def best(f, repeats):
+def best(f, repeats, number=1):
+    """Best wall time per call of `number` calls, over `repeats` timings."""
     f()
-    t = float("inf")
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        f()
-        t = min(t, time.perf_counter() - t0)
-    return t
+    return min(timeit.repeat(f, number=number, repeat=repeats)) / number
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeats", type=int, default=7)
+    parser.add_argument("--repeats", type=int, default=9)
     args = parser.parse_args()
     r = args.repeats
     a1 = np.array([0.2])
     a5 = 0.5 * np.arange(1, 100_001) / 100_001
     mu200 = np.logspace(-2, 1, 200)
     rows = [
-        ("equilibrium 1", lambda: wa.equilibrium("dw", 0.3, 1.0, a1), r),
-        ("equilibrium scalar", lambda: wa.equilibrium("dw", 0.3, 1.0, 0.2), r),
-        ("equilibrium 1e5", lambda: wa.equilibrium("dw", 0.3, 1.0, a5), max(1, r // 2)),
-        ("jkr_load 1", lambda: wa.jkr_load(0.3, 0.2), r),
-        ("jkr_load 1e5", lambda: wa.jkr_load(0.3, a5), r),
-        ("critical_forces 1", lambda: wa.critical_forces("dw", 0.3, 1.0), r),
-        ("critical_forces 200", lambda: wa.critical_forces("dw", 0.3, mu200), 2),
+        ("equilibrium scalar", lambda: wa.equilibrium("dw", 0.3, 1.0, 0.2), 2000),
+        ("equilibrium 1", lambda: wa.equilibrium("dw", 0.3, 1.0, a1), 2000),
+        ("equilibrium 1e5", lambda: wa.equilibrium("dw", 0.3, 1.0, a5), 1),
+        ("jkr_load scalar", lambda: wa.jkr_load(0.3, 0.2), 2000),
+        ("jkr_load 1e5", lambda: wa.jkr_load(0.3, a5), 1),
+        ("critical_forces 1", lambda: wa.critical_forces("dw", 0.3, 1.0), 100),
+        ("critical_forces 200", lambda: wa.critical_forces("dw", 0.3, mu200), 1),
     ]
-    for name, f, n in rows:
-        t = best(f, n)
-        print(f"{name:22s} {t * 1e6:12.1f} us")
+    for name, f, number in rows:
+        t = best(f, r, number)
+        print(f"{name:22s} {t * 1e6:12.2f} us")
 
 
 if __name__ == "__main__":
