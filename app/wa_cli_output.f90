@@ -87,6 +87,12 @@ module wa_cli_output
          type(c_ptr), value :: s
          integer(c_size_t) :: n
       end function c_strlen
+      function c_chmod(path, mode) result(status) bind(C, name="chmod")
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: mode
+         integer(c_int) :: status
+      end function c_chmod
       subroutine c_free(p) bind(C, name="free")
          import :: c_ptr
          type(c_ptr), value :: p
@@ -101,6 +107,7 @@ contains
       type(sink_type), intent(out) :: sink
       character(len=*), intent(in) :: path
       logical, intent(out) :: ok
+      intrinsic :: stat                                  ! GNU extension, as isatty in main
       integer :: values(13), status, k
       character(len=12) :: pid, attempt
 
@@ -135,7 +142,8 @@ contains
          if (c_associated(sink%file)) exit
       end do
       ok = c_associated(sink%file)
-      if (ok .and. status == 0) call chmod(sink%temp, mode_text(values(3)))  ! keep FILE's mode
+      if (ok .and. status == 0) &                        ! keep FILE's permission bits
+         status = c_chmod(sink%temp//c_null_char, int(iand(values(3), int(o'7777')), c_int))
       if (.not. ok) call c_perror("wavyadhesion: --output: cannot create a file in the "// &
          "directory of '"//path//"'"//c_null_char)
    end subroutine open_sink
@@ -234,14 +242,5 @@ contains
       character(len=:), allocatable :: base
       base = path(index(path, "/", back=.true.) + 1:)
    end function base_name
-
-   !> Permission bits of a stat mode as chmod(1) reads them, e.g. "644".
-   pure function mode_text(mode) result(text)
-      integer, intent(in) :: mode
-      character(len=:), allocatable :: text
-      character(len=8) :: buf
-      write (buf, '(o0)') iand(mode, int(o'7777'))
-      text = trim(buf)
-   end function mode_text
 
 end module wa_cli_output
