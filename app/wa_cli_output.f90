@@ -4,10 +4,10 @@
 !> a temporary file in the same directory, which is renamed over FILE only when the whole
 !> table was written and closed: an existing FILE is never damaged and no empty file is
 !> left behind when a run fails. Anything else (a device such as /dev/null or /dev/full,
-!> a FIFO) is written directly.
+!> a FIFO) is written directly. SIGINT, SIGTERM and SIGHUP remove the temporary file.
 module wa_cli_output
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_char, &
-      c_null_char, c_int, c_size_t, c_f_pointer
+      c_null_char, c_int, c_size_t, c_f_pointer, c_funptr, c_funloc
    implicit none
    private
 
@@ -28,6 +28,14 @@ module wa_cli_output
    end type sink_type
 
    integer, parameter :: s_ifmt = int(o'170000'), s_ifreg = int(o'100000')
+   !> POSIX signal numbers (the same on Linux and macOS)
+   integer(c_int), parameter :: sigint = 2, sigterm = 15, sighup = 1
+   integer, parameter :: path_max = 4096
+
+   !> The temporary file to unlink if SIGINT/SIGTERM/SIGHUP ends the program (NUL-
+   !> terminated; empty when none). The one piece of program-wide state of the driver: a
+   !> signal handler can reach nothing else. Not part of the library.
+   character(kind=c_char, len=path_max), save :: pending_temp = c_null_char
 
    interface
       function c_fopen(path, mode) result(file) bind(C, name="fopen")
@@ -93,6 +101,21 @@ module wa_cli_output
          integer(c_int), value :: mode
          integer(c_int) :: status
       end function c_chmod
+      function c_signal(signum, handler) result(previous) bind(C, name="signal")
+         import :: c_int, c_funptr
+         integer(c_int), value :: signum
+         type(c_funptr), value :: handler
+         type(c_funptr) :: previous
+      end function c_signal
+      function c_unlink(path) result(status) bind(C, name="unlink")
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: status
+      end function c_unlink
+      subroutine c_exit_now(status) bind(C, name="_exit")
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit_now
       subroutine c_free(p) bind(C, name="free")
          import :: c_ptr
          type(c_ptr), value :: p
@@ -142,6 +165,7 @@ contains
          if (c_associated(sink%file)) exit
       end do
       ok = c_associated(sink%file)
+      if (ok) call remove_on_signal(sink%temp)
       if (ok .and. status == 0) &                        ! keep FILE's permission bits
          status = c_chmod(sink%temp//c_null_char, int(iand(values(3), int(o'7777')), c_int))
       if (.not. ok) call c_perror("wavyadhesion: --output: cannot create a file in the "// &
@@ -175,6 +199,7 @@ contains
       end if
       ok = .not. sink%failed
       if (len(sink%temp) == 0) return
+      pending_temp = c_null_char
       if (ok) then
          if (c_rename(sink%temp//c_null_char, sink%final//c_null_char) /= 0) then
             call c_perror("wavyadhesion: --output: cannot rename '"//sink%temp//"' to '"// &
@@ -196,8 +221,30 @@ contains
       end if
       status = c_fclose(sink%file)
       sink%file = c_null_ptr
+      pending_temp = c_null_char
       if (len(sink%temp) > 0) status = c_remove(sink%temp//c_null_char)
    end subroutine discard_sink
+
+   !> Remember `temp` and catch SIGINT, SIGTERM and SIGHUP: a run stopped by Ctrl-C or
+   !> kill removes its temporary file (the target stays as it was).
+   subroutine remove_on_signal(temp)
+      character(len=*), intent(in) :: temp
+      type(c_funptr) :: previous
+      if (len(temp) >= path_max) return
+      pending_temp = temp//c_null_char
+      previous = c_signal(sigint, c_funloc(on_signal))
+      previous = c_signal(sigterm, c_funloc(on_signal))
+      previous = c_signal(sighup, c_funloc(on_signal))
+   end subroutine remove_on_signal
+
+   !> Signal handler: unlink the temporary file and exit with 128 + signal (only
+   !> async-signal-safe calls: unlink, _exit).
+   subroutine on_signal(signum) bind(C)
+      integer(c_int), value :: signum
+      integer(c_int) :: status
+      if (pending_temp(1:1) /= c_null_char) status = c_unlink(pending_temp)
+      call c_exit_now(128_c_int + signum)
+   end subroutine on_signal
 
    subroutine write_failed(sink)
       type(sink_type), intent(inout) :: sink

@@ -6,7 +6,9 @@ import csv
 import io
 import math
 import os
+import signal
 import subprocess
+import time
 from pathlib import Path
 
 import pytest
@@ -376,3 +378,25 @@ def test_critical_failure_note_in_table_header(cli):
     assert len(data) == 2
     if res.returncode == 1:
         assert "# 1 of 2 rows failed" in res.stdout
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_interrupted_run_removes_its_temporary_file(cli, tmp_path, sig):
+    out = tmp_path / "t.txt"
+    out.write_text("precious\n")
+    proc = subprocess.Popen([cli, "critical", "--model", "md", "--mu-range",
+                             "0.01:10:2000:log", "--output", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        for _ in range(200):                      # the temporary file is made at start
+            if len(files_in(tmp_path)) == 2:
+                break
+            time.sleep(0.05)
+        assert len(files_in(tmp_path)) == 2
+        proc.send_signal(sig)
+        proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 128 + sig
+    assert files_in(tmp_path) == ["t.txt"]
+    assert out.read_text() == "precious\n"
