@@ -240,3 +240,12 @@ def test_long_call_is_interruptible(func):
     total = 489 if func == "equilibrium" else 125
     print(func, out.strip())
     assert 2 <= calls < total / 2, out
+
+
+@pytest.mark.parametrize("mu, text", [(-1e300, "-1.00000E+300"), (-1e-310, "-1.00000E-310"),
+                                      (-2.5, "-2.50000E+00")])
+def test_messages_keep_the_exponent_letter(mu, text):
+    # es12.5 printed 1e300 as "1.00000+300" (issue 9 item 8)
+    with pytest.raises(wa.InvalidArgumentError) as info:
+        wa.equilibrium("dw", 0.3, mu, 0.2)
+    assert f"mu = {text} is outside" in str(info.value)
