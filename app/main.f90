@@ -163,8 +163,8 @@ contains
       if (status /= wa_ok) call numerical_error(status, msg)
       call write_header(out, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
          model_name(opts%model), params, "a_star c_star P_star b_star zone_case stable event", &
-         [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: dP*/da* > 0 (load control)", &
-         event_legend(1), event_legend(2)])
+         [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: 1 = stable under load control", &
+         event_legend(1), event_legend(2), event_legend(3)])
       do i = 1, b%n
          call write_row(out, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
             b%a_star(i) + 0.4_wp*(b%c_star(i) - b%a_star(i))], &
@@ -342,8 +342,10 @@ contains
       character(len=80) :: text
       if (line == 1) then
          text = "event: 0 none, 1 fold, 2 zone-case switch, 3 jump start, 4 jump end,"
+      else if (line == 2) then
+         text = "       5 full contact reached, 6 full contact left, 7 pull-off, 8 branch end,"
       else
-         text = "       5 full contact reached, 6 full contact left, 7 pull-off, 8 branch end"
+         text = "       9 a*-turn (a* turns back, not a fold; stability unchanged)"
       end if
    end function event_legend
 

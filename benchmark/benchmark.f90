@@ -1,9 +1,29 @@
 !> Benchmark of the SPEC section 9 targets. Prints figures; asserts nothing.
-!>   fpm run --profile release wavyadhesion-benchmark
+!>   fpm run --profile release --example wavyadhesion-benchmark
 program benchmark
-   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use wavyadhesion
    implicit none
+   character(len=64) :: arg
+   integer :: i_arg
+
+   do i_arg = 1, command_argument_count()
+      call get_command_argument(i_arg, arg)
+      select case (arg)
+      case ("--help", "-h")
+         write (*, '(a)') "usage: wavyadhesion-benchmark [--help | --version]", &
+            "Times DW and MD points, branches and critical forces against the SPEC 9 targets", &
+            "(single core, medians over repeats) and prints the figures; takes no options."
+         stop
+      case ("--version")
+         write (*, '(a)') "wavyadhesion-benchmark "//wa_version
+         stop
+      case default
+         write (error_unit, '(a)') "wavyadhesion-benchmark: unknown argument '"//trim(arg)// &
+            "' (try --help)"
+         stop 2
+      end select
+   end do
 
    write (*, '(a)') "wavyadhesion "//wa_version//" benchmark (one core; medians over repeats)"
    write (*, '(a)') "target (SPEC 9): DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"

@@ -7,11 +7,20 @@
  *
  * Conventions (see doc/c-api.md):
  * - loads P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile);
- *   widths a* = a/L and c* = c/L in [0, 1/2]; parameters alpha > 0 and mu >= 0;
+ *   widths a* = a/L and c* = c/L in [0, 1/2]; parameters alpha in
+ *   [WA_ALPHA_MIN, WA_ALPHA_MAX] and mu = 0 or in [WA_MU_MIN, WA_MU_MAX] (the supported
+ *   domain, see doc/theory.md; NaN, infinite and other values give WA_INVALID_ARGUMENT
+ *   with a message stating this range);
  * - every function that takes pointers returns an int status (WA_OK = 0) and writes its
  *   results through the pointers; arrays are caller-allocated with an explicit
  *   capacity; nothing is allocated for the caller to free;
  * - NULL result pointers give WA_INVALID_ARGUMENT (never a crash);
+ * - on failure each function writes the values it states below (NaN, 0, -1) through
+ *   every result pointer that is not NULL, whatever the failure (an invalid model or
+ *   argument, another pointer being NULL, a numerical failure); result arrays are not
+ *   written on failure (those of wa_critical_sweep excepted);
+ * - WA_CAPACITY_TOO_SMALL is returned only by the functions with a `capacity` argument
+ *   and only when the count they return exceeds it;
  * - every function is thread safe (no global state).
  * Link with: -lwavyadhesion -lgfortran -lgsl -lgslcblas -lm
  */
@@ -26,6 +35,14 @@ extern "C" {
 #define WA_MODEL_JKR 1
 #define WA_MODEL_DW 2
 #define WA_MODEL_MD 3
+
+/* The supported parameter domain (alpha_min, alpha_max, mu_min, mu_max in the Fortran
+   module wa_params): alpha in [WA_ALPHA_MIN, WA_ALPHA_MAX], mu = 0 or in
+   [WA_MU_MIN, WA_MU_MAX]. */
+#define WA_ALPHA_MIN 1e-12
+#define WA_ALPHA_MAX 1e12
+#define WA_MU_MIN 1e-100
+#define WA_MU_MAX 1e100
 
 /* Status codes (equal to the wa_* constants of the Fortran module wa_status). */
 #define WA_OK 0
@@ -51,6 +68,8 @@ extern "C" {
 #define WA_EVENT_FULL_CONTACT_LEFT 6    /* full contact left on unloading */
 #define WA_EVENT_PULL_OFF 7             /* contact lost (load P_pf*) */
 #define WA_EVENT_BRANCH_END 8           /* first and last point of a branch */
+#define WA_EVENT_A_TURN 9               /* a* turns back (two case-1 roots merge): not a
+                                           fold; stability does not change there */
 
 /* Stages of a load path (stage_loading, stage_unloading in wa_loadpath). */
 #define WA_STAGE_LOADING 1      /* from separation at P* = 0 up to full contact */
@@ -65,13 +84,17 @@ extern "C" {
 /* Westergaard load P* = sin^2(pi a*); NaN when a_star is outside [0, 1/2] or NaN. */
 double wa_westergaard_load(double a_star);
 
-/* JKR load P* = sin^2(pi a*) - alpha sqrt(tan(pi a*)) (Johnson 1995); -Infinity at
-   a* = 1/2 (alpha > 0); NaN when alpha < 0 or a_star is outside [0, 1/2]. */
+/* JKR load P* = sin^2(pi a*) - alpha sqrt(tan(pi a*)) (Johnson 1995) for any finite
+   alpha >= 0 (alpha = 0: the Westergaard load); -Infinity at a* = 1/2 when alpha > 0
+   (and where alpha sqrt(tan(pi a*)) overflows); NaN when alpha is NaN, negative or
+   infinite, or a_star is NaN or outside [0, 1/2]. */
 double wa_jkr_load(double alpha, double a_star);
 
 /* Principal equilibrium of `model` at a_star: c*, P* and zone case (DW, MD: the case-1
    state with the smallest c*, else the case-2 state; Westergaard, JKR: c* = a*, zone
-   case 1, 3 at a* = 1/2). On failure *c_star = *P_star = NaN and *zone_case = 0. */
+   case 1, 3 at a* = 1/2; JKR at a* = 1/2: P* = -INFINITY). On WA_OK c* is in
+   [a*, 1/2] and P* is finite (JKR at 1/2 excepted). On any failure *c_star = *P_star =
+   NaN and *zone_case = 0 (each one that is not NULL). Never WA_CAPACITY_TOO_SMALL. */
 int wa_equilibrium(int model, double alpha, double mu, double a_star,
                    double *c_star, double *P_star, int *zone_case);
 
@@ -84,8 +107,9 @@ int wa_equilibrium_msg(int model, double alpha, double mu, double a_star,
 
 /* Every equilibrium at a_star, case-1 states by increasing c*, then the case-2 state.
    *n_roots receives the total. When it exceeds `capacity` the first `capacity` states
-   are written and WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays asks
-   for the count). On any other failure *n_roots = 0. */
+   are written, nothing beyond, and WA_CAPACITY_TOO_SMALL is returned (capacity 0 with
+   NULL arrays asks for the count). On any other failure *n_roots = 0 (when n_roots is
+   not NULL) and the arrays are not written. */
 int wa_roots(int model, double alpha, double mu, double a_star, int capacity,
              double *c_star, double *P_star, int *zone_case, int *n_roots);
 
@@ -97,13 +121,23 @@ int wa_roots_msg(int model, double alpha, double mu, double a_star, int capacity
 /* The equilibrium branch P*(a*), c*(a*) of `model` over 0 < a* <= 1/2, traced by
    pseudo-arclength continuation (DW, MD) or sampled from the closed form (Westergaard,
    JKR), in the order of the curve (not necessarily of a*), with every fold and zone-case
-   switch as a point of its own (event[] = WA_EVENT_FOLD, WA_EVENT_SWITCH; the first and
-   last points are WA_EVENT_BRANCH_END). stable[] is 1 where d(P*)/d(a*) > 0 (stable under
-   load control), 0 elsewhere and at folds. *n_points receives the number of points. When
-   it exceeds `capacity` the first `capacity` points are written, nothing beyond, and
-   WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays asks for the count; the
-   branch is traced either way, so allocate generously: a few hundred points are usual).
-   On any other failure *n_points = 0. */
+   switch as a point of its own (event[] = WA_EVENT_FOLD, WA_EVENT_SWITCH), and every point
+   where a* turns back (MD: WA_EVENT_A_TURN; P* is not extremal there). The curve can
+   come in pieces (DW, MD: a piece that returns to a* -> 0, then the one that reaches
+   a* = 1/2): each piece starts and ends with a WA_EVENT_BRANCH_END point, so the first
+   and the last point are WA_EVENT_BRANCH_END, the last at a* = 1/2 (JKR: 1/2 - 1e-9,
+   where P* is still finite), and a branch of k pieces has 2 (k - 1) more BRANCH_END
+   points inside, in pairs at consecutive indices (the end of one piece, the start of
+   the next). stable[] is 1 where the state is stable under load control, 0 elsewhere
+   and at folds: on case 2 (c* = 1/2) where d(P*)/d(a*) > 0; on case 1 stability changes
+   only at extrema of P* along the curve (folds, corner extrema), not at a*-turns, so a
+   piece that returns after an a*-turn with P* rising as a* falls is unstable
+   (doc/theory.md, "Stability under load control"). *n_points receives the number
+   of points. When it exceeds `capacity` the first `capacity` points are written,
+   nothing beyond, and WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays
+   asks for the count; the branch is traced either way, so allocate generously: a few
+   hundred points are usual). On any other failure *n_points = 0 (when n_points is not
+   NULL) and the arrays are not written. */
 int wa_trace_branch(int model, double alpha, double mu, int capacity,
                     double *a_star, double *c_star, double *P_star, int *zone_case,
                     int *stable, int *event, int *n_points);
@@ -116,8 +150,9 @@ int wa_trace_branch_msg(int model, double alpha, double mu, int capacity,
 
 /* Critical forces under load control: *P_fc receives the load at which full contact is
    first reached on loading from separation at P* = 0, *P_pf the pull-off load on
-   unloading from full contact (JKR: -INFINITY, full contact never releases). On failure
-   both are NaN. */
+   unloading from full contact (JKR: -INFINITY, full contact never releases); both finite
+   otherwise. On failure both are NaN (each one that is not NULL). Never
+   WA_CAPACITY_TOO_SMALL. */
 int wa_critical_forces(int model, double alpha, double mu, double *P_fc, double *P_pf);
 
 /* As wa_critical_forces, with the message of wa_equilibrium_msg. */
@@ -128,8 +163,9 @@ int wa_critical_forces_msg(int model, double alpha, double mu, double *P_fc, dou
    jumps, full contact reached) and unloading (WA_STAGE_UNLOADING: full contact left,
    jumps, pull-off), in order, with *P_fc and *P_pf as wa_critical_forces gives them.
    *n_events receives the number of events (at most 64). When it exceeds `capacity` the
-   first `capacity` events are written, *P_fc and *P_pf too, and WA_CAPACITY_TOO_SMALL
-   is returned. On any other failure *n_events = 0 and *P_fc = *P_pf = NaN. */
+   first `capacity` events are written, nothing beyond, *P_fc and *P_pf too, and
+   WA_CAPACITY_TOO_SMALL is returned. On any other failure *n_events = 0 and *P_fc =
+   *P_pf = NaN (each one that is not NULL) and the arrays are not written. */
 int wa_load_path(int model, double alpha, double mu, int capacity,
                  int *stage, int *event, double *a_star, double *c_star, double *P_star,
                  int *n_events, double *P_fc, double *P_pf);
@@ -142,11 +178,12 @@ int wa_load_path_msg(int model, double alpha, double mu, int capacity,
 
 /* P_fc*, P_pf* and their mechanisms (WA_MECHANISM_*) for one alpha and n_mu values of
    mu (the arrays have n_mu elements; they may be NULL when n_mu is 0). Every argument
-   (every mu) is validated before any work: an invalid one gives WA_INVALID_ARGUMENT and
-   NaN (mechanisms -1) in every row. A mu whose load path fails does not stop the sweep:
-   its row gets NaN forces and mechanisms -1, every other row is written, and the status
-   of the first failing row is returned (its message names that mu and the number of
-   failing rows). wa_critical_sweep_status gives the status of each row. */
+   (every mu) is validated before any work: on an invalid one (WA_INVALID_ARGUMENT), when
+   n_mu > 0, every element of each output array that is not NULL is NaN (mechanisms -1).
+   A mu whose load path fails does not stop the sweep: its row gets NaN forces and
+   mechanisms -1, every other row is written, and the status of the first failing row is
+   returned (its message names that mu and the number of failing rows).
+   wa_critical_sweep_status gives the status of each row. Never WA_CAPACITY_TOO_SMALL. */
 int wa_critical_sweep(int model, double alpha, int n_mu, const double *mu,
                       double *P_fc, double *P_pf, int *fc_mechanism, int *pf_mechanism);
 
@@ -166,6 +203,11 @@ int wa_critical_sweep_status(int model, double alpha, int n_mu, const double *mu
 /* Short fixed text of a status code: a static NUL-terminated string, never NULL
    ("unknown status" for codes the library does not return). Do not free it. */
 const char *wa_status_message(int status);
+
+/* Version of the library, e.g. "0.2.0" (the same as the Fortran constant wa_version,
+   Python's wavyadhesion.__version__ and `wavyadhesion --version`): a static
+   NUL-terminated string, never NULL. Do not free it. */
+const char *wa_version(void);
 
 #ifdef __cplusplus
 }

@@ -17,27 +17,34 @@ module wa_branch
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
-      curve_case2_load, curve_variable
-   use wa_models, only: check_model, model_roots, model_equilibrium
+      curve_case2_load, curve_variable, curve_equilibrium
+   use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
    private
 
    public :: branch_type, trace_options, trace_branch
    public :: event_none, event_fold, event_switch, event_jump_start, event_jump_end, &
-      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end
+      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end, &
+      event_a_turn
 
-   !> Event codes of SPEC section 7.
+   !> Event codes (the CLI's and C header's): 0 none, 1 fold of P*, 2 zone-case switch,
+   !> 3 jump start, 4 jump end, 5 full contact reached, 6 full contact left, 7 pull-off,
+   !> 8 branch end (first and last point of each piece), 9 a*-turn (two case-1 roots
+   !> merge: a* turns back, P* does not; not a fold, stability does not change there).
    integer, parameter :: event_none = 0, event_fold = 1, event_switch = 2, &
       event_jump_start = 3, event_jump_end = 4, event_full_contact_reached = 5, &
-      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8
+      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8, &
+      event_a_turn = 9
 
    !> A traced branch: points in the order of the curve (not necessarily of a*).
    type :: branch_type
       integer :: n = 0
       real(wp), allocatable :: a_star(:), c_star(:), p_star(:)
       integer, allocatable :: zone_case(:)
-      !> dP*/da* > 0 (stable under load control); false at extrema
+      !> Stable under load control (doc/theory.md, "Stability"): case 2 where dP*/da* > 0;
+      !> case 1 where D = dP*/da* dF/dy - dP*/dy dF/da* > 0, which changes sign only at
+      !> extrema of P* along the curve, never where a* alone turns. False at extrema.
       logical, allocatable :: stable(:)
       !> event code of the point (0 for ordinary points)
       integer, allocatable :: event(:)
@@ -65,9 +72,13 @@ module wa_branch
       real(wp) :: t(2) = 0.0_wp
       !> dP*/dsigma along the direction of travel
       real(wp) :: dp = 0.0_wp
+      !> D = P_a F_y - P_y F_a (case 1): > 0 where the state is stable under load control
+      real(wp) :: det = 0.0_wp
    end type curve_point
 
    integer, parameter :: max_newton = 12
+   !> Width of the last stretch before a* = 1/2 that approach_half samples
+   real(wp), parameter :: end_width = 1.0e-4_wp
 
 contains
 
@@ -183,13 +194,13 @@ contains
       type(branch_type), intent(inout) :: branch
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      type(state_type) :: starts(8)
+      type(state_type) :: starts(max_model_roots)
       integer :: n_starts, k
 
       call model_roots(model, params, opts%a_start, starts, n_starts, status, errmsg)
       if (status /= wa_ok) return
       do k = 1, n_starts
-         if (visited(branch, starts(k))) cycle
+         if (visited(branch, starts(k), opts%a_start)) cycle
          call trace_piece(model, params, opts, starts(k), branch, status, errmsg)
          if (status /= wa_ok) return
          if (branch%a_star(branch%n) >= 0.5_wp) return
@@ -198,16 +209,21 @@ contains
          "a* = 1/2", status, errmsg)
    end subroutine cohesive_branch
 
-   !> Has a traced piece already started or ended at this state?
-   pure logical function visited(branch, s)
+   !> Has a traced piece already started at this start state, or ended on the start line
+   !> (a piece returning to a* -> 0 stops at a* <= a_start) in the same zone case and c*?
+   !> The zone case matters: near a mechanism change a case-1 root at c* = 1/2 - 1e-7
+   !> and the case-2 state sit closer in c* than any tolerance.
+   pure logical function visited(branch, s, a_start)
       type(branch_type), intent(in) :: branch
       type(state_type), intent(in) :: s
+      real(wp), intent(in) :: a_start
       integer :: i
       visited = .false.
       do i = 1, branch%n
          if (branch%event(i) /= event_branch_end) cycle
-         if (abs(branch%c_star(i) - s%c_star) <= 1.0e-6_wp*s%c_star .and. &
-            abs(branch%a_star(i) - s%a_star) <= 1.0e-3_wp*s%a_star) visited = .true.
+         if (branch%zone_case(i) /= s%zone_case) cycle
+         if (branch%a_star(i) > a_start*(1.0_wp + 1.0e-3_wp)) cycle
+         if (abs(branch%c_star(i) - s%c_star) <= 1.0e-6_wp*s%c_star) visited = .true.
       end do
    end function visited
 
@@ -223,6 +239,7 @@ contains
       type(curve_point) :: p
       real(wp) :: h
       integer :: n0
+      logical :: sampled, handled
 
       n0 = branch%n
       p%a = start%a_star
@@ -236,7 +253,16 @@ contains
       end if
       call push(model, params, p, event_branch_end, 0, branch)
       h = opts%step_max
+      sampled = .false.
       do while (branch%n - n0 < opts%max_points)
+         if (p%zone_case == zone_inside .and. .not. sampled .and. p%t(1) > 0.0_wp .and. &
+            p%a >= 0.5_wp - end_width) then
+            sampled = .true.
+            call approach_half(model, params, p, branch, handled, status, errmsg)
+            if (status /= wa_ok) return
+            if (branch%event(branch%n) == event_branch_end) return
+            if (handled) cycle
+         end if
          if (p%zone_case == zone_inside) then
             call step_case1(model, params, opts, p, h, branch, status, errmsg)
          else
@@ -334,7 +360,7 @@ contains
       else if (p%t(1)*q%t(1) < 0.0_wp) then         ! a* turns back: stability flips
          call locate_zero(model, params, p, h, 2, f, status, errmsg)
          if (status /= wa_ok) return
-         call push(model, params, f, event_none, 2, branch)
+         call push(model, params, f, event_a_turn, 2, branch)
       end if
       if (q%a <= opts%a_start .or. q%a >= 0.5_wp - 1.0e-12_wp) then
          call push(model, params, q, event_branch_end, 0, branch)
@@ -345,6 +371,74 @@ contains
       if (iters <= 2) h = min(opts%step_max, 1.5_wp*h)
       if (iters >= 5) h = 0.5_wp*h
    end subroutine step_case1
+
+   !> The last stretch to a* = 1/2 (1/2 - a* < end_width, travelling towards 1/2). a* holds
+   !> 1/2 - a* only to 5.5e-17 absolute, so near 1/2 the corrector's finite differences
+   !> fail (large mu: the zone reaches c* = 1/2 within 1e-8 of a* = 1/2) and its steps
+   !> crowd there. The curve is sampled instead by point solves at 1/2 - a* = b0 r^k,
+   !> following the state nearest the previous c*, and the switch to case 2 is located by
+   !> Brent on F(a*, y_max). Anything else (a failed solve, a jump of the zone variable,
+   !> P* turning, a switch not bracketed) hands the last sample back to the continuation
+   !> (handled = .false.).
+   subroutine approach_half(model, params, p, branch, handled, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(inout) :: p
+      type(branch_type), intent(inout) :: branch
+      logical, intent(out) :: handled
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: ratio = 0.5_wp, b_last = 1.0e-15_wp, max_y_jump = 2.0_wp
+      type(state_type) :: s, s_prev
+      type(curve_point) :: q
+      real(wp) :: b, a, slope, v_prev, v_here, a_switch
+      integer :: k, st
+
+      handled = .false.
+      status = wa_ok
+      s_prev = curve_state(model, params, p%a, p%y)
+      b = 0.5_wp - p%a
+      do k = 1, 200
+         b = max(ratio*b, 0.999_wp*b_last)
+         a = 0.5_wp - b
+         call curve_equilibrium(model, params, a, s_prev%c_star, s, st)
+         if (st /= wa_ok) exit
+         if (s%zone_case == zone_whole_period) then            ! c* reached 1/2 on the way
+            v_prev = curve_residual(model, params, p%a, curve_y_max)
+            v_here = curve_residual(model, params, a, curve_y_max)
+            if (v_prev*v_here > 0.0_wp) exit
+            a_switch = switch_abscissa(model, params, p%a, v_prev, a, v_here, st)
+            if (st /= wa_ok) exit
+            slope = (curve_case2_load(model, params, a_switch) - s_prev%p_star) &
+               /(a_switch - p%a)
+            q = case2_point(model, a_switch, 1.0_wp)
+            call push(model, params, q, event_switch, corner_extremum(slope, q%dp), branch)
+            p = q
+            handled = .true.
+            return
+         end if
+         if (s%zone_case /= zone_inside) exit
+         q%a = a
+         q%y = curve_variable(model, s)
+         q%zone_case = zone_inside
+         q%t = [1.0_wp, 0.0_wp]
+         slope = (s%p_star - s_prev%p_star)/(a - p%a)
+         if (abs(q%y - p%y) > max_y_jump .or. slope*p%dp <= 0.0_wp) exit
+         q%dp = slope
+         q%det = p%det                 ! no extremum of P* since p: stability carries over
+         if (b <= b_last) then        ! still case 1: the switch is beyond double precision
+            call set_error(wa_numerical_error, "trace_branch: the interaction zone "// &
+               "reaches c* = 1/2 closer than 1e-15 to a* = 1/2, which double precision "// &
+               "does not resolve: mu is too large for this alpha (the JKR limit applies)", &
+               status, errmsg)
+            return
+         end if
+         call push(model, params, q, event_none, 0, branch)
+         p = q
+         s_prev = s
+      end do
+      call orient(model, params, p, [1.0_wp, 0.0_wp])       ! back to the continuation
+   end subroutine approach_half
 
    !> Predictor z + h t, then Newton on F = 0, t.(z - z_pred) = 0.
    pure subroutine corrector(model, params, p, h, q, iters, ok)
@@ -415,7 +509,8 @@ contains
       real(wp), intent(out) :: f, g(2)
       real(wp) :: ha, hy
       f = curve_residual(model, params, a, y)
-      ha = 1.0e-7_wp*max(a, 1.0e-3_wp)
+      ! F varies on the scale of the distance to the nearer end of 0 < a* < 1/2
+      ha = 1.0e-7_wp*min(max(a, 1.0e-3_wp), 0.5_wp - a)
       if (a + ha >= 0.5_wp) ha = -ha
       hy = -1.0e-7_wp*max(abs(y), 1.0_wp)
       g(1) = (curve_residual(model, params, a + ha, y) - f)/ha
@@ -435,6 +530,7 @@ contains
       q%t = q%t/norm2(q%t)
       if (dot_product(q%t, previous) < 0.0_wp) q%t = -q%t
       q%dp = pa*q%t(1) + py*(q%t(2)/w)
+      q%det = pa*fy - py*fa
    end subroutine orient
 
    !> Five-point differences of F and P* in a* and y (one-sided where the domain ends):
@@ -541,8 +637,12 @@ contains
       real(wp), intent(in) :: h
       real(wp) :: a_next
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
-      ! F(a*, y_max) changes sign across the a* where the curve reaches y_max
+      ! F(a*, y_max) changes sign across the a* where the curve reaches y_max; but it also
+      ! changes where another sheet is born at y_max (MD: a second case-1 root and case 2
+      ! appear together), so the curve itself must be heading into y_max within the step
       crosses_case2 = p%t(2) > 0.0_wp .and. &
+         curve_weight(model)*(curve_y_max - p%y) <= h*p%t(2)
+      if (crosses_case2) crosses_case2 = &
          curve_residual(model, params, a_next, curve_y_max) &
          *curve_residual(model, params, p%a, curve_y_max) <= 0.0_wp
    end function crosses_case2
@@ -572,10 +672,73 @@ contains
       q%zone_case = zone_inside
       call orient(model, params, q, p%t)
       slope_before = q%dp
+      ! P* turned between the last point and the switch, where the curve runs steeply up
+      ! to c* = 1/2 and the corrector cannot follow: locate that fold by the point solver
+      if (p%dp*slope_before < 0.0_wp) then
+         call fold_before_switch(model, params, p, q%a, status, errmsg, branch)
+         if (status /= wa_ok) return
+      end if
       q = case2_point(model, q%a, dir)
       call push(model, params, q, event_switch, corner_extremum(slope_before, q%dp), branch)
       p = q
    end subroutine switch_to_case2
+
+   !> The extremum of P* on the case-1 curve between p and the switch at a_switch, by
+   !> golden sections on P*(a*) of the state nearest p's c* (to 1e-12 relative in a*),
+   !> pushed as a fold.
+   subroutine fold_before_switch(model, params, p, a_switch, status, errmsg, branch)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: a_switch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type), intent(inout) :: branch
+      real(wp), parameter :: golden = 0.3819660112501051518_wp
+      type(state_type) :: s, s_hint
+      type(curve_point) :: f
+      real(wp) :: lo, hi, x1, x2, f1, f2, sgn
+      integer :: iter
+
+      s_hint = curve_state(model, params, p%a, p%y)
+      sgn = sign(1.0_wp, p%dp)                 ! +1: a maximum of P*, -1: a minimum
+      lo = min(p%a, a_switch)
+      hi = max(p%a, a_switch)
+      x1 = lo + golden*(hi - lo)
+      x2 = hi - golden*(hi - lo)
+      f1 = sgn*load_at(x1)
+      f2 = sgn*load_at(x2)
+      do iter = 1, 200
+         if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
+         if (f1 > f2) then
+            hi = x2; x2 = x1; f2 = f1
+            x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
+         else
+            lo = x1; x1 = x2; f1 = f2
+            x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
+         end if
+      end do
+      if (status /= wa_ok) return
+      call curve_equilibrium(model, params, 0.5_wp*(lo + hi), s_hint%c_star, s, status, errmsg)
+      if (status /= wa_ok) return
+      if (s%zone_case /= zone_inside) then
+         call set_error(wa_numerical_error, "trace_branch: the fold before a case switch "// &
+            "could not be located", status, errmsg)
+         return
+      end if
+      f%a = s%a_star
+      f%y = curve_variable(model, s)
+      f%zone_case = zone_inside
+      f%t = p%t
+      call push(model, params, f, event_fold, nint(sgn), branch)
+   contains
+      real(wp) function load_at(a)
+         real(wp), intent(in) :: a
+         type(state_type) :: st
+         call curve_equilibrium(model, params, a, s_hint%c_star, st, status, errmsg)
+         load_at = st%p_star
+      end function load_at
+   end subroutine fold_before_switch
 
    !> The a* where F(a*, y_max) = 0 between a1 and a2 (case switch, to ~1e-15).
    function switch_abscissa(model, params, a1, v1, a2, v2, status, errmsg) result(a)
@@ -638,6 +801,7 @@ contains
       type(curve_point), intent(in) :: q
       type(branch_type), intent(inout) :: branch
       type(state_type) :: s
+      logical :: stable
       if (q%zone_case == zone_inside) then
          s = curve_state(model, params, q%a, q%y)
       else
@@ -647,8 +811,12 @@ contains
          s%p_star = curve_case2_load(model, params, q%a)
          s%zone_case = q%zone_case
       end if
-      call append(branch, s, q%dp*sign(1.0_wp, q%t(1)) > 0.0_wp .and. extremum == 0 &
-         .and. q%t(1) /= 0.0_wp, event, extremum)
+      if (q%zone_case == zone_inside) then
+         stable = q%det > 0.0_wp
+      else                                             ! one degree of freedom: dP*/da* > 0
+         stable = q%dp*sign(1.0_wp, q%t(1)) > 0.0_wp .and. q%t(1) /= 0.0_wp
+      end if
+      call append(branch, s, stable .and. abs(extremum) /= 1, event, extremum)
    end subroutine push
 
    subroutine append(branch, s, stable, event, extremum)

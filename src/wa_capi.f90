@@ -19,6 +19,7 @@ module wa_capi
    use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
+   use wa_release, only: wa_version
    implicit none
    private
 
@@ -27,6 +28,7 @@ module wa_capi
    public :: capi_trace_branch, capi_trace_branch_msg, capi_critical_forces, &
       capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
       capi_critical_sweep_msg, capi_critical_sweep_status
+   public :: capi_version
 
    !> Length of one status text, NUL included.
    integer, parameter :: text_len = 32
@@ -36,6 +38,10 @@ module wa_capi
    integer, parameter :: msg_len = 256
    !> States held before asking for a larger buffer (more roots than this are rare).
    integer, parameter :: roots_buffer = 64
+
+   !> NUL-terminated version text for wa_version(); immutable data like status_texts.
+   character(kind=c_char, len=len(wa_version) + 1), target, save, protected :: &
+      version_text = wa_version//c_null_char
 
    !> NUL-terminated status texts, same wording as wa_status::status_message, index =
    !> status code, last entry = unknown. Immutable data: nothing ever assigns to it (the
@@ -408,7 +414,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
-         c_null_ptr, status, msg)
+         c_null_ptr, .false., status, msg)
    end function capi_critical_sweep
 
    !> int wa_critical_sweep_msg(..., char *message, int message_capacity): as
@@ -439,7 +445,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
-         c_null_ptr, status, msg)
+         c_null_ptr, .false., status, msg)
       call copy_message(msg, message, message_capacity)
    end function capi_critical_sweep_msg
 
@@ -474,16 +480,8 @@ contains
       integer(c_int), value, intent(in) :: message_capacity
       integer(c_int) :: status
       character(len=msg_len) :: msg
-      integer :: stat
-      msg = ""
-      if (n_mu > 0 .and. .not. c_associated(row_status)) then
-         call set_error(wa_invalid_argument, "mu, P_fc, P_pf, fc_mechanism, pf_mechanism "// &
-            "and row_status must not be NULL when n_mu > 0", stat, msg)
-         status = int(stat, c_int)
-      else
-         call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
-            row_status, status, msg)
-      end if
+      call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
+         row_status, .true., status, msg)
       call copy_message(msg, message, message_capacity)
    end function capi_critical_sweep_status
 
@@ -500,6 +498,13 @@ contains
       end if
    end function capi_status_message
 
+
+   !> const char *wa_version(void): the library's version, e.g. "0.2.0": a static
+   !> NUL-terminated text, never NULL.
+   function capi_version() result(text) bind(C, name="wa_version")
+      type(c_ptr) :: text
+      text = c_loc(version_text)
+   end function capi_version
 
    ! ---------------------------------------------------------------- internals
 
@@ -518,6 +523,9 @@ contains
       integer :: stat
 
       msg = ""
+      call put_nan(c_star)
+      call put_nan(p_star)
+      call put_int(zone_case, 0)
       if (.not. (c_associated(c_star) .and. c_associated(p_star) .and. &
             c_associated(zone_case))) then
          call set_error(wa_invalid_argument, "c_star, P_star and zone_case must not be NULL", &
@@ -528,9 +536,6 @@ contains
       call c_f_pointer(c_star, c_out)
       call c_f_pointer(p_star, p_out)
       call c_f_pointer(zone_case, z_out)
-      c_out = ieee_value(c_out, ieee_quiet_nan)
-      p_out = c_out
-      z_out = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call model_equilibrium(int(model), params, a_star, state, stat, msg)
@@ -557,22 +562,24 @@ contains
       integer :: stat, n
 
       msg = ""
+      call put_int(n_roots, 0)
       call check_roots_pointers(capacity, c_star, p_star, zone_case, n_roots, stat, msg)
       if (stat /= wa_ok) then
          status = int(stat, c_int)
          return
       end if
       call c_f_pointer(n_roots, n_out)
-      n_out = 0
       n = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) then
          allocate (states(min(int(capacity), roots_buffer)))
          call model_roots(int(model), params, a_star, states, n, stat, msg)
-         if (stat == wa_capacity_too_small .and. n <= capacity) then   ! our buffer was short
+         if (stat == wa_capacity_too_small .and. size(states) < min(n, int(capacity))) then
+            ! our buffer was shorter than the caller's: solve again with room for
+            ! min(n, capacity) states (the count does not change: the solve is deterministic)
             deallocate (states)
-            allocate (states(n))
+            allocate (states(min(n, int(capacity))))
             msg = ""
             call model_roots(int(model), params, a_star, states, n, stat, msg)
          end if
@@ -640,6 +647,7 @@ contains
       integer :: stat, m
 
       msg = ""
+      call put_int(n_points, 0)
       call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
          "a_star, c_star, P_star, zone_case, stable and event", stat, msg)
       if (stat /= wa_ok) then
@@ -647,10 +655,10 @@ contains
          return
       end if
       call c_f_pointer(n_points, n_out)
-      n_out = 0
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          m = min(branch%n, int(capacity))
          call store_reals(reals(1), branch%a_star(1:m))
@@ -679,6 +687,8 @@ contains
       integer :: stat
 
       msg = ""
+      call put_nan(p_fc)
+      call put_nan(p_pf)
       if (.not. (c_associated(p_fc) .and. c_associated(p_pf))) then
          call set_error(wa_invalid_argument, "P_fc and P_pf must not be NULL", stat, msg)
          status = int(stat, c_int)
@@ -686,11 +696,10 @@ contains
       end if
       call c_f_pointer(p_fc, fc_out)
       call c_f_pointer(p_pf, pf_out)
-      fc_out = ieee_value(fc_out, ieee_quiet_nan)
-      pf_out = fc_out
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call critical_forces(int(model), params, fc, pf, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          fc_out = fc
          pf_out = pf
@@ -714,6 +723,9 @@ contains
       integer :: stat, m
 
       msg = ""
+      call put_int(n_events, 0)
+      call put_nan(p_fc)
+      call put_nan(p_pf)
       call check_outputs("n_events", n_events, "capacity", capacity, [ints, reals], &
          "stage, event, a_star, c_star and P_star", stat, msg)
       if (stat == wa_ok .and. .not. (c_associated(p_fc) .and. c_associated(p_pf))) &
@@ -725,12 +737,10 @@ contains
       call c_f_pointer(n_events, n_out)
       call c_f_pointer(p_fc, fc_out)
       call c_f_pointer(p_pf, pf_out)
-      n_out = 0
-      fc_out = ieee_value(fc_out, ieee_quiet_nan)
-      pf_out = fc_out
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call load_path(int(model), params, path, stat, msg)
+      call internal_capacity(stat, msg)
       if (stat == wa_ok) then
          m = min(path%n, int(capacity))
          call store_ints(ints(1), path%stage(1:m))
@@ -749,11 +759,12 @@ contains
 
    !> Validate everything (every mu first), then sweep: a failing mu leaves NaN and -1 in
    !> its row only (an invalid argument: in every row). reals = [P_fc, P_pf],
-   !> ints = [fc_mechanism, pf_mechanism]; rows = row_status (C_NULL_PTR: not wanted).
-   subroutine sweep_core(model, alpha, n_mu, mu, reals, ints, rows, status, msg)
+   !> ints = [fc_mechanism, pf_mechanism]; rows = row_status, required when want_rows.
+   subroutine sweep_core(model, alpha, n_mu, mu, reals, ints, rows, want_rows, status, msg)
       integer(c_int), intent(in) :: model, n_mu
       real(c_double), intent(in) :: alpha
       type(c_ptr), intent(in) :: mu, reals(2), ints(2), rows
+      logical, intent(in) :: want_rows
       integer(c_int), intent(out) :: status
       character(len=*), intent(out) :: msg
       real(c_double), pointer :: mu_in(:), fc_out(:), pf_out(:)
@@ -765,7 +776,13 @@ contains
       character(len=12) :: text
 
       msg = ""
-      if (c_associated(rows)) then
+      if (n_mu > 0) then                      ! the failure values, in every non-NULL array
+         call put_nans(reals(1), n_mu)
+         call put_nans(reals(2), n_mu)
+         call put_ints(ints(1), n_mu, -1)
+         call put_ints(ints(2), n_mu, -1)
+      end if
+      if (want_rows) then
          call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints, rows], &
             "mu, P_fc, P_pf, fc_mechanism, pf_mechanism and row_status", stat, msg)
       else
@@ -773,6 +790,7 @@ contains
             "mu, P_fc, P_pf, fc_mechanism and pf_mechanism", stat, msg)
       end if
       if (stat /= wa_ok) then
+         if (want_rows .and. n_mu > 0) call put_ints(rows, n_mu, stat)
          status = int(stat, c_int)
          return
       end if
@@ -787,10 +805,6 @@ contains
       call c_f_pointer(reals(2), pf_out, [n_mu])
       call c_f_pointer(ints(1), fcm_out, [n_mu])
       call c_f_pointer(ints(2), pfm_out, [n_mu])
-      fc_out = ieee_value(1.0_c_double, ieee_quiet_nan)
-      pf_out = fc_out
-      fcm_out = -1
-      pfm_out = -1
       do i = 1, int(n_mu)
          if (stat /= wa_ok) exit
          call new_params(alpha, mu_in(i), params, stat, msg)
@@ -805,12 +819,14 @@ contains
          allocate (p_fc(n_mu), p_pf(n_mu), fc_mech(n_mu), pf_mech(n_mu))
          call critical_sweep(int(model), alpha, mu_in, p_fc, p_pf, fc_mech, pf_mech, stat, &
             msg, row_stat)
-         fc_out = p_fc
+         call internal_capacity(stat, msg)
+         where (row_stat == wa_capacity_too_small) row_stat = wa_numerical_error
+         fc_out = p_fc                        ! every row: NaN and -1 where one failed
          pf_out = p_pf
          fcm_out = int(fc_mech, c_int)
          pfm_out = int(pf_mech, c_int)
       end if
-      if (c_associated(rows)) then
+      if (want_rows) then
          call c_f_pointer(rows, rows_out, [n_mu])
          rows_out = int(row_stat, c_int)
       end if
@@ -872,6 +888,57 @@ contains
          what//" "//trim(t_n)//" "//items//" (the first "//trim(t_cap)//" were written)", &
          stat, msg)
    end subroutine too_small
+
+   !> A wa_capacity_too_small from the numerics below a function whose only capacity is
+   !> the caller's (checked here) is an internal buffer running short: report it as
+   !> wa_numerical_error, so the caller never reads it as "your array is too small".
+   subroutine internal_capacity(stat, msg)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: msg
+      if (stat /= wa_capacity_too_small) return
+      stat = wa_numerical_error
+      msg = "internal buffer too small: "//msg
+   end subroutine internal_capacity
+
+   !> *ptr = NaN unless ptr is NULL (a failure's value, written before any check).
+   subroutine put_nan(ptr)
+      type(c_ptr), intent(in) :: ptr
+      real(c_double), pointer :: out
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out)
+      out = ieee_value(out, ieee_quiet_nan)
+   end subroutine put_nan
+
+   !> *ptr = value unless ptr is NULL.
+   subroutine put_int(ptr, value)
+      type(c_ptr), intent(in) :: ptr
+      integer, intent(in) :: value
+      integer(c_int), pointer :: out
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out)
+      out = int(value, c_int)
+   end subroutine put_int
+
+   !> ptr[0..n-1] = NaN unless ptr is NULL (n > 0).
+   subroutine put_nans(ptr, n)
+      type(c_ptr), intent(in) :: ptr
+      integer(c_int), intent(in) :: n
+      real(c_double), pointer :: out(:)
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out, [n])
+      out = ieee_value(1.0_c_double, ieee_quiet_nan)
+   end subroutine put_nans
+
+   !> ptr[0..n-1] = value unless ptr is NULL (n > 0).
+   subroutine put_ints(ptr, n, value)
+      type(c_ptr), intent(in) :: ptr
+      integer(c_int), intent(in) :: n
+      integer, intent(in) :: value
+      integer(c_int), pointer :: out(:)
+      if (.not. c_associated(ptr)) return
+      call c_f_pointer(ptr, out, [n])
+      out = int(value, c_int)
+   end subroutine put_ints
 
    !> Copy values into a caller's double array (nothing when there are none).
    subroutine store_reals(ptr, values)

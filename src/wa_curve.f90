@@ -15,7 +15,7 @@ module wa_curve
       model_md
    use wa_dw, only: dw_residual, dw_state_at
    use wa_md, only: md_curve_residual, md_curve_state
-   use wa_models, only: model_roots
+   use wa_models, only: model_roots, max_model_roots
    implicit none
    private
 
@@ -33,6 +33,10 @@ contains
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star, y
       real(wp) :: f
+      if (params%sigma0 == 0.0_wp) then      ! mu = 0: Westergaard, case 2 throughout
+         f = -1.0_wp
+         return
+      end if
       select case (model)
       case (model_dw)
          f = dw_residual(params, a_star, y)
@@ -92,7 +96,7 @@ contains
       type(state_type), intent(out) :: state
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      type(state_type) :: states(8)
+      type(state_type) :: states(max_model_roots)
       integer :: n
       call model_roots(model, params, a_star, states, n, status, errmsg)
       if (status /= wa_ok) return

@@ -5,9 +5,10 @@
 !> C - A = s (1 - A) and 1 - C = (1 - s)(1 - A) then carry no cancellation at either end,
 !> however small the zone (large mu: C - A ~ 1e-13) or however close c* is to 1/2.
 module wa_dw
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, wa_capacity_too_small, &
-      set_error
+      wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
@@ -26,6 +27,10 @@ module wa_dw
    end type contact_geometry
 
    integer, parameter :: max_iterations = 100
+   !> Step of the downward walk to the first root, in u = ln s
+   real(wp), parameter :: step = log(4.0_wp)
+   character(len=*), parameter :: unresolved_zone = "dw: the interaction zone at this "// &
+      "a_star is not resolved in double precision (a_star < 1e-150 with C < 1e-100)"
    !> Points of the scan in dw_roots that looks for further sign changes.
    integer, parameter :: scan_points = 48
 
@@ -71,7 +76,7 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: found(scan_points)
-      real(wp) :: u(scan_points), g(scan_points), s
+      real(wp) :: u(scan_points), g(scan_points), s, g_top
       type(contact_geometry) :: geo
       integer :: i
 
@@ -83,10 +88,17 @@ contains
          n_roots = 1
          found(1) = special_state(params, geo)
       else
-         u = scan_abscissae(params, geo)
+         g_top = residual(params, geo, 0.0_wp)
+         call first_root_floor(params, geo, g_top, u(1), g(1), status, errmsg)
+         if (status /= wa_ok) return
+         u = scan_abscissae(params, geo, u(1))
          do i = 1, scan_points
             g(i) = residual(params, geo, u(i))
          end do
+         if (any(ieee_is_nan(g))) then
+            call set_error(wa_numerical_error, unresolved_zone, status, errmsg)
+            return
+         end if
          do i = 1, scan_points - 1
             if (g(i)*g(i + 1) > 0.0_wp .or. g(i) == 0.0_wp) cycle
             call refine(params, geo, u(i), g(i), u(i + 1), g(i + 1), s, status, errmsg)
@@ -94,7 +106,7 @@ contains
             n_roots = n_roots + 1
             found(n_roots) = case1_state(params, geo, s)
          end do
-         if (residual(params, geo, 0.0_wp) < 0.0_wp) then
+         if (g_top < 0.0_wp) then
             n_roots = n_roots + 1
             found(n_roots) = case2_state(params, geo)
          end if
@@ -213,25 +225,11 @@ contains
       real(wp), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp), parameter :: step = log(4.0_wp), u_floor = log(tiny(1.0_wp))
-      real(wp) :: u_lo, g_lo, u_hi, g_hi, u0
+      real(wp) :: u_lo, g_lo, u_hi, g_hi
 
-      u0 = large_mu_estimate(params, geo)
-      u_hi = 0.0_wp
-      g_hi = g_top
-      u_lo = min(u0, log(0.5_wp))
-      g_lo = residual(params, geo, u_lo)
-      do while (g_lo > 0.0_wp)            ! walk down until the bracket closes
-         u_hi = u_lo; g_hi = g_lo
-         u_lo = u_lo - step
-         if (u_lo < u_floor) then
-            s = 0.0_wp
-            call set_error(wa_no_solution, "dw: no case-1 root could be bracketed", &
-               status, errmsg)
-            return
-         end if
-         g_lo = residual(params, geo, u_lo)
-      end do
+      s = 0.0_wp
+      call first_root_floor(params, geo, g_top, u_lo, g_lo, status, errmsg, u_hi, g_hi)
+      if (status /= wa_ok) return
       if (u_hi == 0.0_wp .and. u_lo + step < 0.0_wp) then   ! tighten the upper end
          g_hi = residual(params, geo, u_lo + step)
          if (g_hi >= 0.0_wp) then
@@ -242,6 +240,45 @@ contains
       end if
       call refine(params, geo, u_lo, g_lo, u_hi, g_hi, s, status, errmsg)
    end subroutine solve_case1
+
+   !> A point u_lo below the first case-1 root (G(u_lo) < 0; G -> -inf as s -> 0): from
+   !> the large-mu estimate of the root (or s = 1/2), walk down in steps of ln 4.
+   !> (u_hi, g_hi): the last point above it (0 and g_top = G(0) if none).
+   pure subroutine first_root_floor(params, geo, g_top, u_lo, g_lo, status, errmsg, u_hi, g_hi)
+      type(params_type), intent(in) :: params
+      type(contact_geometry), intent(in) :: geo
+      real(wp), intent(in) :: g_top
+      real(wp), intent(out) :: u_lo, g_lo
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), intent(out), optional :: u_hi, g_hi
+      real(wp), parameter :: u_floor = log(tiny(1.0_wp))
+      real(wp) :: u_prev, g_prev
+      integer :: k
+
+      u_prev = 0.0_wp
+      g_prev = g_top
+      u_lo = min(large_mu_estimate(params, geo), log(0.5_wp))
+      status = wa_ok
+      do k = 1, 600
+         g_lo = residual(params, geo, u_lo)
+         if (ieee_is_nan(g_lo)) exit
+         if (g_lo <= 0.0_wp) then
+            if (present(u_hi)) u_hi = u_prev
+            if (present(g_hi)) g_hi = g_prev
+            return
+         end if
+         u_prev = u_lo; g_prev = g_lo
+         u_lo = u_lo - step
+         if (u_lo < u_floor) exit
+      end do
+      if (ieee_is_nan(g_lo)) then
+         call set_error(wa_numerical_error, unresolved_zone, status, errmsg)
+      else
+         call set_error(wa_no_solution, "dw: no case-1 root could be bracketed", &
+            status, errmsg)
+      end if
+   end subroutine first_root_floor
 
    !> Brent on G(u) over a bracket [u1, u2]; s = exp(root).
    pure subroutine refine(params, geo, u1, g1, u2, g2, s, status, errmsg)
@@ -325,13 +362,15 @@ contains
 
    !> Abscissae u = ln s for the root scan: log-spaced from far below the principal
    !> root up to s -> 1.
-   pure function scan_abscissae(params, geo) result(u)
+   pure function scan_abscissae(params, geo, u_floor) result(u)
       type(params_type), intent(in) :: params
       type(contact_geometry), intent(in) :: geo
+      !> A point below the first root (first_root_floor)
+      real(wp), intent(in) :: u_floor
       real(wp) :: u(scan_points)
       real(wp) :: u_lo, u_hi
       integer :: i
-      u_lo = min(large_mu_estimate(params, geo), log(0.5_wp)) - 8.0_wp
+      u_lo = min(large_mu_estimate(params, geo) - 8.0_wp, log(0.5_wp) - 8.0_wp, u_floor)
       u_hi = log1p(-epsilon(1.0_wp))
       do i = 1, scan_points
          u(i) = u_lo + (u_hi - u_lo)*real(i - 1, wp)/real(scan_points - 1, wp)
@@ -345,5 +384,6 @@ contains
       real(wp) :: u
       u = log(2.0_wp*params%alpha**2*geo%cos_a/params%sigma0**2) - log(geo%one_minus_a)
    end function large_mu_estimate
+
 
 end module wa_dw

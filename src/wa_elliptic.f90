@@ -58,6 +58,8 @@ module wa_elliptic
    integer, parameter :: max_bartky = 40
    !> Smallest A accepted by istar_scaled (keeps kc far from underflow).
    real(wp), parameter :: a_min = 1.0e-150_wp
+   !> Below a_min, W(A,C) = W(0,C) to double precision where C >= c_min_a0.
+   real(wp), parameter :: c_min_a0 = 1.0e-100_wp
    !> Below this y = (1-C^2)/(1-A^2), W(A,C) = W(A,1) (1 + O(y)): use I_A* (E3).
    real(wp), parameter :: y_at_one = 1.0e-20_wp
 
@@ -74,6 +76,7 @@ contains
    !> W = I*(A,C)/(C^2-A^2)^2, (2.25b) of MODEL-NOTES.md scaled to O(1), from accurate
    !> inputs: a = A >= 1e-150, c = C in [A, 1], d2 = C^2-A^2 >= 0, omc2 = 1-C^2 >= 0 (may be
    !> 0), d2 + omc2 = 1-A^2 > 0. At d2 = 0 it returns the limit pi sqrt(1-A^2)/(16A).
+   !> For 0 <= A < 1e-150 it returns W(0,C) (istar_scaled_a0), which needs C >= 1e-100.
    !> Relative error below 1.5e-15 (measured against mpmath, tools/check_istar.py), about
    !> 100 ns per call. NaN for invalid input.
    elemental function istar_scaled(a, c, d2, omc2) result(w)
@@ -87,6 +90,11 @@ contains
       real(wp), intent(in) :: omc2
       real(wp) :: w
       real(wp) :: b1, y, cel(0:2)
+      if (a < a_min .and. a >= 0.0_wp .and. c >= c_min_a0 .and. c <= 1.0_wp &
+            .and. omc2 >= 0.0_wp .and. omc2 <= 1.0_wp) then
+         w = istar_scaled_a0(c, omc2)      ! dropping A changes W by O((A/C)^2 ln(C/A))
+         return
+      end if
       if (.not. (a >= a_min .and. c >= a .and. c <= 1.0_wp .and. d2 >= 0.0_wp &
             .and. omc2 >= 0.0_wp .and. d2 + omc2 > 0.0_wp .and. d2 + omc2 <= 1.5_wp)) then
          w = ieee_value(w, ieee_quiet_nan)
@@ -101,6 +109,33 @@ contains
          w = sqrt(b1)/c*(-y*cel(1) + (d2/b1)*cel(2))                         ! (E2)
       end if
    end function istar_scaled
+
+   !> W(0,C) = I*(0,C)/C^4, the a* -> 0 limit of istar_scaled (c = C, omc2 = 1 - C^2):
+   !>   8 I*(0,C) = (1 + C^2) C - (1 - C^2)^2 artanh(C)                               (E6)
+   !> (int_0^C X sqrt(1-X^2) sqrt(C^2-X^2) dX with u = C^2 - X^2), and for C < 1/2, where
+   !> (E6) cancels, its series I*(0,C)/C^3 = sum t_k C^(2k), t_0 = 1/3,
+   !> t_(k+1) = t_k (2k-1)/(2k+5).
+   pure function istar_scaled_a0(c, omc2) result(w)
+      real(wp), intent(in) :: c, omc2
+      real(wp) :: w
+      real(wp) :: term, total, c2
+      integer :: k
+      if (c < 0.5_wp) then
+         c2 = c*c
+         term = 1.0_wp/3.0_wp
+         total = term
+         do k = 0, 60
+            term = term*c2*real(2*k - 1, wp)/real(2*k + 5, wp)
+            total = total + term
+            if (abs(term) <= 0.5_wp*epsilon(1.0_wp)*total) exit
+         end do
+         w = total/c
+      else if (omc2 > 0.0_wp) then
+         w = ((2.0_wp - omc2)*c - omc2**2*0.5_wp*log((1.0_wp + c)**2/omc2))/(8.0_wp*c**4)
+      else
+         w = 0.25_wp
+      end if
+   end function istar_scaled_a0
 
    !> I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX, (2.28c) of MODEL-NOTES.md, in closed
    !> form from a = A in [0,1] and oma2 = 1-A^2 given accurately. It vanishes like

@@ -9,7 +9,7 @@ module wa_gsl
    private
 
    integer(c_int), parameter, public :: gsl_success = 0
-   !> gsl_mode_t: GSL_PREC_DOUBLE, full double precision.
+   !> GSL_PREC_DOUBLE (a gsl_mode_t): full double precision.
    integer(c_int), parameter, public :: gsl_prec_double = 0
 
    !> gsl_sf_result

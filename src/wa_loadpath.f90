@@ -23,9 +23,11 @@ module wa_loadpath
    public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
+   !> Bound on the jumps of one loading or unloading (a path holds at most 64 events)
+   integer, parameter :: max_jumps = 15
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
-   !> Mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
+   !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
       mechanism_jump_case2 = 2, mechanism_snap = 3
@@ -105,17 +107,17 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: s
-      integer :: k, seg
+      integer :: k, seg, jumps
       real(wp) :: load
 
       status = wa_ok
       call add(path, stage_loading, event_jump_start, 0.0_wp, 0.0_wp, 0.0_wp)
       call vertex(loop, 0.0_wp, 0.0_wp)
       seg = landing_segment(branch, 0.0_wp, 0.0_wp, +1)
-      if (branch%p_star(1) >= 0.0_wp .and. rising(branch, 1)) seg = 1   ! in contact from a* -> 0
+      if (branch%p_star(1) >= 0.0_wp .and. stable_segment(branch, 1)) seg = 1   ! in contact from a* -> 0
       load = 0.0_wp
       path%fc_mechanism = mechanism_snap
-      do
+      do jumps = 1, max_jumps
          if (seg == 0) then                          ! nothing stable ahead: snap to full contact
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, load)
             call vertex(loop, 0.5_wp, load)
@@ -133,19 +135,22 @@ contains
          call add(path, stage_loading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
          k = piece_end(branch, seg, +1)              ! rise while the piece is stable
-         call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) > &
-            branch%a_star(seg)), k)
+         call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) > &
+            branch%p_star(seg)), k)
          if (branch%a_star(k) >= 0.5_wp) then
             path%p_fc = branch%p_star(k)
             path%fc_mechanism = mechanism_gradual
             call add(path, stage_loading, event_full_contact_reached, 0.5_wp, 0.5_wp, path%p_fc)
             return
          end if
+         if (.not. (branch%p_star(k) > load)) exit  ! each stable piece must raise the load
          load = branch%p_star(k)
          path%fc_mechanism = jump_from(branch%zone_case(k))
          call add(path, stage_loading, event_jump_start, branch%a_star(k), branch%c_star(k), load)
          seg = landing_segment(branch, branch%a_star(k), load, +1)
       end do
+      call set_error(wa_numerical_error, "load_path: loading makes no progress along the "// &
+         "traced branch (a stable piece that does not raise the load)", status, errmsg)
    end subroutine loading
 
    !> Leave full contact at P*(a* -> 1/2), fall along stable pieces, jump at every
@@ -159,7 +164,7 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: s
-      integer :: k, seg
+      integer :: k, seg, jumps
       real(wp) :: load
 
       status = wa_ok
@@ -173,12 +178,12 @@ contains
       call add(path, stage_unloading, event_full_contact_left, 0.5_wp, 0.5_wp, load)
       call vertex(loop, 0.5_wp, load)
       seg = 0
-      if (rising(branch, k - 1)) seg = k - 1         ! else the end itself is a minimum
-      do
+      if (stable_segment(branch, k - 1)) seg = k - 1  ! else the end itself is a minimum
+      do jumps = 1, max_jumps
          if (seg > 0) then                            ! fall while the piece is stable
             k = piece_end(branch, seg, -1)
-            call follow(loop, branch, merge(seg + 1, seg, branch%a_star(seg + 1) < &
-               branch%a_star(seg)), k)
+            call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) < &
+               branch%p_star(seg)), k)
             if (branch%event(k) == event_branch_end) then   ! shrinks gradually to a* -> 0
                call curve_equilibrium(model, params, a_limit, branch%c_star(k), s, status, errmsg)
                if (status /= wa_ok) return
@@ -187,6 +192,7 @@ contains
                call vertex(loop, 0.0_wp, path%p_pf)
                return
             end if
+            if (.not. (branch%p_star(k) < load)) exit  ! each stable piece must lower it
             load = branch%p_star(k)
          end if
          call add(path, stage_unloading, event_jump_start, branch%a_star(k), &
@@ -206,6 +212,8 @@ contains
          call add(path, stage_unloading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
       end do
+      call set_error(wa_numerical_error, "load_path: unloading makes no progress along the "// &
+         "traced branch (a stable piece that does not lower the load)", status, errmsg)
    end subroutine unloading
 
    pure integer function jump_from(zone_case)
@@ -372,22 +380,21 @@ contains
       text = trim(buf)
    end function int_text
 
-   !> From the stable segment [seg, seg+1], walk along the branch toward larger a*
-   !> (dir = +1, rising load) or smaller a* (dir = -1) while the segments stay stable;
-   !> the last point reached ends the stable piece: a fold, a corner, a point where a*
-   !> turns back, or an end of the branch.
+   !> From the stable segment [seg, seg+1], walk along the branch toward rising load
+   !> (dir = +1, loading) or falling load (dir = -1) while the segments stay stable; the
+   !> last point reached ends the stable piece: a fold, a corner extremum or an end of the
+   !> branch. An a*-turn does not end it: stability changes only at extrema of P*.
    pure integer function piece_end(branch, seg, dir)
       type(branch_type), intent(in) :: branch
       integer, intent(in) :: seg, dir
       integer :: step, nxt
-      step = merge(1, -1, (branch%a_star(seg + 1) - branch%a_star(seg))*dir > 0.0_wp)
+      step = merge(1, -1, (branch%p_star(seg + 1) - branch%p_star(seg))*dir > 0.0_wp)
       piece_end = merge(seg + 1, seg, step == 1)
       do
          nxt = piece_end + step
          if (nxt < 1 .or. nxt > branch%n) exit
-         if (.not. joined(branch, min(piece_end, nxt))) exit
-         if (.not. rising(branch, min(piece_end, nxt))) exit
-         if ((branch%a_star(nxt) - branch%a_star(piece_end))*dir <= 0.0_wp) exit   ! a corner
+         if (.not. stable_segment(branch, min(piece_end, nxt))) exit
+         if ((branch%p_star(nxt) - branch%p_star(piece_end))*dir <= 0.0_wp) exit  ! extremum
          piece_end = nxt
       end do
    end function piece_end
@@ -411,7 +418,7 @@ contains
       landing_segment = 0
       best = huge(1.0_wp)
       do i = 1, branch%n - 1
-         if (.not. rising(branch, i)) cycle
+         if (.not. stable_segment(branch, i)) cycle
          if (.not. (min(branch%p_star(i), branch%p_star(i + 1)) <= load .and. &
             load <= max(branch%p_star(i), branch%p_star(i + 1)))) cycle
          a_mid = 0.5_wp*(branch%a_star(i) + branch%a_star(i + 1))
@@ -423,13 +430,14 @@ contains
       end do
    end function landing_segment
 
-   !> Segment [i, i+1] is on a stable piece: P* and a* increase together.
-   pure logical function rising(branch, i)
+   !> Segment [i, i+1] lies on a stable piece (its ends are stable, or one end is the
+   !> extremum or corner that bounds the piece and the other is stable), P* not constant.
+   pure logical function stable_segment(branch, i)
       type(branch_type), intent(in) :: branch
       integer, intent(in) :: i
-      rising = joined(branch, i) .and. (branch%p_star(i + 1) - branch%p_star(i)) &
-         *(branch%a_star(i + 1) - branch%a_star(i)) > 0.0_wp
-   end function rising
+      stable_segment = joined(branch, i) .and. branch%p_star(i + 1) /= branch%p_star(i) &
+         .and. (branch%stable(i) .or. branch%stable(i + 1))
+   end function stable_segment
 
    !> The equilibrium on segment [seg, seg+1] whose load is `load` (Brent in a*).
    subroutine solve_on_segment(model, params, branch, seg, load, s, status, errmsg)

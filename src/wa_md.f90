@@ -77,6 +77,8 @@ module wa_md
    !> against cos^2 s); such a* return wa_numerical_error.
    real(wp), parameter :: a_star_min = 1.0e-100_wp
    integer, parameter :: max_iterations = 200
+   !> Bound on the scan (x from > -650 to x_mono <= x_limit in steps of 0.8: < 1200)
+   integer, parameter :: max_scan_points = 2000
    !> At most this many case-1 roots per a* (more: wa_numerical_error; 2 is the most seen).
    integer, parameter :: max_roots = 8
    !> Split point r_s = y_s = 1/sqrt 2 of the Psi_c integral.
@@ -447,7 +449,7 @@ contains
       call scan_start(params, geo, xs(3), fs(3), status, errmsg)
       if (status /= wa_ok) return
       n_pts = 1
-      do while (xs(3) < geo%x_mono)
+      do while (xs(3) < geo%x_mono .and. n_pts < max_scan_points)
          xs(1:2) = xs(2:3)
          fs(1:2) = fs(2:3)
          xs(3) = min(xs(2) + scan_step, geo%x_mono)
@@ -460,6 +462,11 @@ contains
          end if
          if (status /= wa_ok .or. (first_only .and. n_found > 0)) return
       end do
+      if (.not. (xs(3) >= geo%x_mono)) then
+         call set_error(wa_numerical_error, "md: the root scan did not reach its end", &
+            status, errmsg)
+         return
+      end if
       call top_root(params, geo, xs(3), fs(3), xr, n_found, status, errmsg)
    end subroutine find_roots
 
@@ -471,12 +478,19 @@ contains
       real(wp), intent(out) :: x_lo, f_lo
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp) :: s_est
+      real(wp) :: log_s_est
       integer :: i
 
-      s_est = min(1.0_wp, sqrt(pi*params%dcod/(params%sigma0*geo%a*geo%q)), &
-         (1.5_wp*params%dcod/(geo%a**2*geo%q**3))**(1.0_wp/3.0_wp))
-      x_lo = min(log(s_est) - 1.5_wp, geo%x_mono - scan_step)
+      ! in logarithms: the estimate underflows where the zone is tiny (large mu, small a*)
+      log_s_est = min(0.0_wp, &
+         0.5_wp*(log(pi) + log(params%dcod) - log(params%sigma0) - log(geo%a) - log(geo%q)), &
+         (log(1.5_wp) + log(params%dcod) - 2.0_wp*log(geo%a) - 3.0_wp*log(geo%q))/3.0_wp)
+      x_lo = min(log_s_est - 1.5_wp, geo%x_mono - scan_step)
+      if (.not. (x_lo > -650.0_wp)) then
+         call set_error(wa_numerical_error, "md: the Dugdale zone at this (alpha, mu, "// &
+            "a_star) is below the resolution of double precision", status, errmsg)
+         return
+      end if
       do i = 1, 40
          f_lo = residual(params, geo, x_lo)
          if (f_lo < 0.0_wp) then

@@ -18,6 +18,10 @@ module wa_models
 
    public :: check_model, model_equilibrium, model_roots
 
+   !> The most states one (alpha, mu, a*) can have in any model (DW's root scan keeps at
+   !> most 48); internal callers size their buffers with it.
+   integer, parameter, public :: max_model_roots = 48
+
 contains
 
    !> status = wa_ok if `model` is one of the four model constants, else

@@ -23,6 +23,13 @@ module wa_params
       real(wp) :: dcod = 0.0_wp
    end type params_type
 
+   !> The accepted parameter domain. Inside it every derived quantity (Sigma0, Dcod, their
+   !> squares and ratios) is a normal double and the solvers are tested (doc/theory.md,
+   !> "Supported range"); outside it new_params refuses with wa_invalid_argument. mu = 0
+   !> (the Westergaard limit) is accepted; 0 < mu < mu_min is refused, not rounded.
+   real(wp), parameter, public :: alpha_min = 1.0e-12_wp, alpha_max = 1.0e12_wp
+   real(wp), parameter, public :: mu_min = 1.0e-100_wp, mu_max = 1.0e100_wp
+
    !> SI scales that turn the dimensionless results back into physical ones.
    type :: scales_type
       !> Reduced modulus E* [Pa]
@@ -39,18 +46,19 @@ module wa_params
 
 contains
 
-   !> Validating constructor: alpha in (0, inf), mu in [0, inf).
+   !> Validating constructor: alpha in [alpha_min, alpha_max], mu = 0 or in
+   !> [mu_min, mu_max] (1e-12 <= alpha <= 1e12, mu = 0 or 1e-100 <= mu <= 1e100).
    pure subroutine new_params(alpha, mu, params, status, errmsg)
       real(wp), intent(in) :: alpha, mu
       type(params_type), intent(out) :: params
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      call check_range("alpha", alpha, 0.0_wp, huge(1.0_wp), "(0, inf)", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+      call check_range("alpha", alpha, alpha_min, alpha_max, "[1e-12, 1e12]", status, errmsg)
       if (status /= wa_ok) return
-      call check_range("mu", mu, 0.0_wp, huge(1.0_wp), "[0, inf)", status, errmsg, &
-         hi_open=.true.)
-      if (status /= wa_ok) return
+      if (mu /= 0.0_wp) then
+         call check_range("mu", mu, mu_min, mu_max, "0 or [1e-100, 1e100]", status, errmsg)
+         if (status /= wa_ok) return
+      end if
       params%alpha = alpha
       params%mu = mu
       params%sigma0 = pi*mu*(alpha**2/32.0_wp)**(1.0_wp/3.0_wp)
@@ -78,10 +86,10 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       estar = 0.0_wp
       call check_range("E1", e1, 0.0_wp, huge(1.0_wp), "(0, inf) Pa", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+         lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("E2", e2, 0.0_wp, huge(1.0_wp), "(0, inf) Pa", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+         lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("nu1", nu1, -1.0_wp, 0.5_wp, "(-1, 1/2]", status, errmsg, lo_open=.true.)
       if (status /= wa_ok) return
@@ -104,26 +112,29 @@ contains
       real(wp) :: alpha, mu, pstar
 
       call check_range("Estar", estar, 0.0_wp, big, "(0, inf) Pa", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+         lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("period", period, 0.0_wp, big, "(0, inf) m", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+         lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("amplitude", amplitude, 0.0_wp, big, "(0, inf) m", status, errmsg, &
-         lo_open=.true., hi_open=.true.)
+         lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("work_of_adhesion", work_of_adhesion, 0.0_wp, big, "(0, inf) J/m^2", &
-         status, errmsg, lo_open=.true., hi_open=.true.)
+         status, errmsg, lo_open=.true.)
       if (status /= wa_ok) return
       call check_range("peak_stress", peak_stress, 0.0_wp, huge(1.0_wp), "[0, inf) Pa", &
-         status, errmsg, hi_open=.true.)
+         status, errmsg)
       if (status /= wa_ok) return
 
       pstar = pi*estar*amplitude/period
       alpha = sqrt(2.0_wp*work_of_adhesion*period/(pi**2*estar*amplitude**2))
       mu = (peak_stress/pstar)/(pi*(alpha**2/32.0_wp)**(1.0_wp/3.0_wp))
       call new_params(alpha, mu, params, status, errmsg)
-      if (status /= wa_ok) return
+      if (status /= wa_ok) then
+         if (present(errmsg)) errmsg = "the SI inputs give "//errmsg
+         return
+      end if
       scales%estar = estar
       scales%pressure = pstar
       scales%force = pstar*period

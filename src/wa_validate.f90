@@ -41,7 +41,7 @@ contains
       end if
       if (bad) then
          if (abs(x) >= 1.0e100_wp .or. (x /= 0.0_wp .and. abs(x) < 1.0e-99_wp)) then
-            write (xtext, '(es13.5e3)') x      ! 3-digit exponent: 1.79769E+308
+            write (xtext, '(es14.5e3)') x        ! three exponent digits keep the letter E
          else
             write (xtext, '(es12.5)') x
          end if

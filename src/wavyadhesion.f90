@@ -1,7 +1,8 @@
-!> wavyadhesion: adhesive contact of a wavy elastic surface against a flat.
+!> The wavyadhesion library: adhesive contact of a wavy elastic surface against a flat.
 !> The umbrella module: `use wavyadhesion` gives the whole public API.
 module wavyadhesion
    use wa_kinds, only: wp
+   use wa_release, only: wa_version
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    use wa_params, only: params_type, scales_type, new_params, dimensional_params, &
@@ -40,6 +41,6 @@ module wavyadhesion
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap
 
-   character(len=*), parameter, public :: wa_version = "0.1.0"
+   public :: wa_version
 
 end module wavyadhesion

@@ -3,7 +3,7 @@
 !> (doc/accuracy-performance.md, SPEC sections 8-9). Prints tables; writes the data of
 !> the tables and plots into the output directory (default build/study).
 !>
-!>   fpm run --profile release wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
+!>   fpm run --profile release --example wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
 !>   commands: all (default: dw md peer curve extreme), dw, md, peer, curve, extreme,
 !>             samples (writes study/data/samples.txt for tools/study_reference.py check)
 !>   --quick: every 7th point of the work-precision sets; --no-peer: skip scipy.

@@ -387,7 +387,7 @@ subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b
    integer(c_int), intent(out) :: zone_case(capacity)
    !> 1 where dP*/da* > 0 (stable under load control), else 0
    integer(c_int), intent(out) :: stable(capacity)
-   !> Event code of each point (0 none, 1 fold, 2 zone-case switch, 8 branch end)
+   !> Event code of each point (0 none, 1 fold, 2 zone-case switch, 8 branch end, 9 a*-turn)
    integer(c_int), intent(out) :: event(capacity)
    !> +1 local maximum of P* along the curve, -1 local minimum, 0 otherwise
    integer(c_int), intent(out) :: extremum(capacity)

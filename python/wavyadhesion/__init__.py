@@ -50,7 +50,12 @@ from ._core import (
     westergaard_load,
 )
 
-__version__ = "0.1.0"
+# The version of the installed distribution, which meson-python takes from the file
+# VERSION at the repository root (python/meson.build), the one source of the number.
+from importlib.metadata import version as _dist_version
+
+__version__ = _dist_version("wavyadhesion")
+del _dist_version
 
 __all__ = [
     "EVENTS",

@@ -80,6 +80,7 @@ EVENTS = {
     6: "full_contact_left",
     7: "pull_off",
     8: "branch_end",
+    9: "a_turn",
 }
 
 #: How full contact is reached or contact is lost, by code (WA_MECHANISM_* in C).

@@ -10,6 +10,7 @@ module unit_bridge
    use test_md, only: collect_md
    use test_reference, only: collect_reference
    use test_branch, only: collect_branch
+   use test_robustness, only: collect_robustness
    implicit none
    private
 
@@ -29,6 +30,7 @@ contains
       case ("md"); call collect_md(tests)
       case ("reference"); call collect_reference(tests)
       case ("branch"); call collect_branch(tests)
+      case ("robustness"); call collect_robustness(tests)
       case default; allocate (tests(0))
       end select
    end subroutine collect

@@ -191,6 +191,7 @@ contains
          new_unittest("c_to_a_limit", test_c_to_a_limit), &
          new_unittest("extremes_finite", test_extremes_finite), &
          new_unittest("invalid_input", test_invalid_input), &
+         new_unittest("a_to_zero_limit", test_a_to_zero), &
          new_unittest("carlson_form_agrees", test_carlson)]
    end subroutine collect_elliptic
 
@@ -311,7 +312,8 @@ contains
       real(wp) :: nan, w
       integer :: status
       nan = ieee_value(nan, ieee_quiet_nan)
-      call check(error, ieee_is_nan(istar_scaled(0.0_wp, 0.5_wp, 0.25_wp, 0.75_wp)), "W at A = 0")
+      call check(error, ieee_is_nan(istar_scaled(0.0_wp, 1.0e-101_wp, 1.0e-202_wp, 1.0_wp)), &
+         "W at A = 0, C < 1e-100")
       call check(error, ieee_is_nan(istar_scaled(0.5_wp, 1.5_wp, 2.0_wp, -1.25_wp)), "W at C > 1")
       call check(error, ieee_is_nan(istar_scaled(0.5_wp, 0.4_wp, -0.09_wp, 0.84_wp)), "W at C < A")
       call check(error, ieee_is_nan(istar_scaled(0.5_wp, 1.0_wp, 0.0_wp, 0.0_wp)), "W at A^2 = 1")
@@ -321,6 +323,28 @@ contains
       call istar_quadrature(0.5_wp, 0.4_wp, w, status)
       call check(error, status == wa_invalid_argument .and. ieee_is_nan(w), "quadrature at C < A")
    end subroutine test_invalid_input
+
+   !> W(0,C) (the a* -> 0 limit, closed form and series) against mpmath quadrature of
+   !> int_0^C X sqrt(1-X^2) sqrt(C^2-X^2) dX / C^4 (40 digits), and continuity with the
+   !> AGM form: W(A,C) -> W(0,C) as A -> 0 (A = 1e-150 is the AGM's smallest A).
+   subroutine test_a_to_zero(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: c(4) = [1.0e-5_wp, 0.1_wp, 0.5_wp, 0.9_wp]
+      real(wp), parameter :: w_ref(4) = [33333.33333266666666665714_wp, &
+         3.326657110966029273655508_wp, 0.6320305876241882985901746_wp, &
+         0.3002310768987284235819305_wp]
+      integer :: i
+      do i = 1, size(c)
+         call check_close(error, istar_scaled(0.0_wp, c(i), c(i)**2, (1.0_wp - c(i))*(1.0_wp + c(i))), &
+            w_ref(i), 2.0e-15_wp, what="W(0,C)")
+         if (allocated(error)) return
+         call check_close(error, istar_scaled(1.0e-150_wp, c(i), c(i)**2, &
+            (1.0_wp - c(i))*(1.0_wp + c(i))), w_ref(i), 2.0e-15_wp, what="W(1e-150,C)")
+         if (allocated(error)) return
+      end do
+      call check_close(error, istar_scaled(0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp), 0.25_wp, 1.0e-16_wp, &
+         what="W(0,1) = I_A*(0) = 1/4")
+   end subroutine test_a_to_zero
 
    !> "name(x1, x2, ...)" for failure messages.
    pure function label(name, x) result(text)

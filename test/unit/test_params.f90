@@ -44,7 +44,7 @@ contains
       msg = ""
       call new_params(0.0_wp, 1.0_wp, p, status, msg)
       call check(error, status == wa_invalid_argument .and. index(msg, "alpha") > 0 &
-         .and. index(msg, "(0, inf)") > 0, "alpha = 0: "//trim(msg))
+         .and. index(msg, "[1e-12, 1e12]") > 0, "alpha = 0: "//trim(msg))
       msg = ""
       call new_params(nan, 1.0_wp, p, status, msg)
       call check(error, status == wa_invalid_argument .and. index(msg, "alpha") > 0, "alpha NaN")
@@ -55,6 +55,24 @@ contains
       call check(error, status == wa_invalid_argument, "mu = inf")
       call new_params(inf, 1.0_wp, p, status)
       call check(error, status == wa_invalid_argument, "alpha = inf")
+      ! the supported domain (doc/theory.md, "Supported range"): its ends are accepted,
+      ! beyond them and 0 < mu < 1e-100 are refused with the range in the message
+      call new_params(1.0e-12_wp, 1.0e-100_wp, p, status)
+      call check(error, status == wa_ok, "alpha = 1e-12, mu = 1e-100 accepted")
+      call new_params(1.0e12_wp, 1.0e100_wp, p, status)
+      call check(error, status == wa_ok, "alpha = 1e12, mu = 1e100 accepted")
+      call new_params(0.3_wp, 0.0_wp, p, status)
+      call check(error, status == wa_ok, "mu = 0 accepted")
+      msg = ""
+      call new_params(0.3_wp, 1.0e-310_wp, p, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "0 or [1e-100, 1e100]") &
+         > 0 .and. index(msg, "E-310") > 0, "denormal mu: "//trim(msg))
+      msg = ""
+      call new_params(huge(1.0_wp), 1.0_wp, p, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "E+308") > 0, &
+         "alpha = DBL_MAX: "//trim(msg))
+      call new_params(0.3_wp, 1.0e101_wp, p, status)
+      call check(error, status == wa_invalid_argument, "mu = 1e101")
    end subroutine test_invalid
 
    !> SI in, dimensionless out, and mu equals its dimensional form

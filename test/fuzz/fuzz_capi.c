@@ -1,0 +1,1380 @@
+/* Contract fuzzer of the C interface: `fpm test --profile release --target fuzz`, part of
+ * `fpm test` (see doc/testing.md).
+ *
+ * Calls every function of include/wavyadhesion.h with random and adversarial inputs
+ * (NaN, +-Inf, +-0, denormals, huge and tiny values, out-of-range model codes, NULL
+ * pointers, capacities 0/1/negative/huge, message buffers of every size) and checks every
+ * promise of the header:
+ *  - the status is one the function documents; invalid arguments (NaN, out of range,
+ *    NULL result pointers, negative capacities, unknown models) give WA_INVALID_ARGUMENT;
+ *  - on WA_OK: no NaN or Inf in the outputs (except the documented -Infinity of JKR at
+ *    a* = 1/2 and JKR's P_pf*), a* in [0, 1/2], c* in [a*, 1/2], zone cases, events,
+ *    stages, mechanisms among the documented codes and consistent with c*, counts within
+ *    the capacity, branches from BRANCH_END to BRANCH_END;
+ *  - on WA_CAPACITY_TOO_SMALL: the count exceeds the capacity;
+ *  - on any other failure: what the header says is written (counts 0, NaN, zone 0,
+ *    mechanisms -1), through every non-NULL pointer;
+ *  - nothing is written outside the arrays (guard elements around every buffer) or beyond
+ *    the count; messages are NUL-terminated inside the buffer, untouched when the buffer
+ *    is NULL or its capacity <= 0, "" on success, a reason on failure;
+ *  - the same call twice (the plain and the _msg variant) gives the same bits;
+ *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
+ *    against wa_critical_forces, the closed-form loads against their formulas.
+ * Every call runs in a forked child watched by the parent: a call that exceeds the time
+ * limit is killed and reported as a hang, a crash as a crash; the run resumes after it.
+ *
+ * Options (or environment variables): --calls N (WA_FUZZ_CALLS, default 100000),
+ * --seed S (WA_FUZZ_SEED, default 20260309), --timeout SECONDS (WA_FUZZ_TIMEOUT,
+ * default 2), --max-hangs N (default 5: the run stops after N hangs; 0: never), --max-print N
+ * (reproducers printed per kind and function, default 3), --only I (run call I alone,
+ * print it and its result), --list (print every call, do not check).
+ * Output: one block per violation (kind, call index, details, a one-line C reproducer),
+ * then a summary (calls, time per function, statuses, violations by kind). Exit status
+ * 0 when no severe violation was found, 1 otherwise, 2 on a usage error. */
+#define _DEFAULT_SOURCE
+#include <errno.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../../include/wavyadhesion.h"
+
+/* wa_version() joined the header after the other functions: declared weak here, so the
+   fuzzer also builds against a library without it (then it is skipped). */
+#pragma weak wa_version
+const char *wa_version(void);
+
+/* ------------------------------------------------------------------ functions */
+
+enum {
+   F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
+   F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION, N_FAMILY
+};
+/* Function ids: a family and whether the _msg variant is called. */
+#define N_FN (2 * N_FAMILY)
+static const char *family_name[N_FAMILY] = {
+   "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
+   "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
+   "wa_version"};
+static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0};
+/* Relative frequency of each family (the slow ones are rarer, see doc/testing.md). */
+static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1};
+
+/* ----------------------------------------------------------- violation kinds */
+
+enum {
+   K_HANG, K_CRASH, K_CHILD_EXIT, K_STATUS, K_INVALID_ACCEPTED, K_NONFINITE, K_STATE,
+   K_COUNT, K_FAIL_OUTPUT, K_OVERRUN, K_MESSAGE, K_NONDET, K_INCONSISTENT, K_VALUE,
+   K_VALID_REJECTED, K_BEYOND, K_MESSAGE_TEXT, K_RANGE_MESSAGE, K_ROOTS_VALUE, K_FAILED_VALID, N_KIND
+};
+static const char *kind_name[N_KIND] = {
+   "hang", "crash", "child-exit", "undocumented-status", "invalid-accepted",
+   "nonfinite-with-ok", "bad-state-with-ok", "count", "failure-outputs", "overrun",
+   "message-buffer", "nondeterministic", "inconsistent", "wrong-value", "valid-rejected",
+   "write-beyond-count", "message-text", "range-message", "roots-vs-equilibrium-value",
+   "failure-in-domain"};
+/* Severe kinds make the exit status 1. */
+static const int kind_severe[N_KIND] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+                                        0, 0, 0, 0, 0};
+static const char *kind_help[N_KIND] = {
+   "a call exceeded the time limit",
+   "a call was killed by a signal",
+   "the child exited non-zero outside a call (e.g. a LeakSanitizer report)",
+   "a status the function does not document",
+   "an argument the header calls invalid (outside the domain, NULL...) was accepted",
+   "NaN or Inf in an output with WA_OK (beyond JKR's documented -Infinity)",
+   "an output out of its documented range with WA_OK (a*, c*, zone, event, order)",
+   "a count above the capacity, or not 0 on failure, or WA_CAPACITY_TOO_SMALL while it fits",
+   "on failure an output is not what the header says (NaN, 0, -1)",
+   "a guard element outside a caller's buffer was written",
+   "a message not NUL-terminated in its buffer, or written when NULL/capacity <= 0",
+   "the same call twice gave different bits",
+   "two functions disagree (roots/equilibrium, sweep/path/critical forces)",
+   "a closed-form load differs from its formula",
+   "arguments valid by the header (domain included) refused with WA_INVALID_ARGUMENT",
+   "an array element beyond the count (within the capacity) was written",
+   "a message empty on failure or not empty on success",
+   "a finite argument rejected with a message claiming the range reaches inf",
+   "wa_roots' first state differs from wa_equilibrium's beyond 1e-9",
+   "WA_NO_SOLUTION, WA_NOT_CONVERGED or WA_NUMERICAL_ERROR inside the domain (a report)"};
+
+/* --------------------------------------------------------------- shared state */
+
+typedef struct {
+   volatile long current;   /* call under way in the child, -1 between calls */
+   volatile double started; /* when it started (monotonic seconds) */
+   volatile long next;      /* first call not finished */
+   long calls[N_FN];        /* top-level calls per function */
+   long lib_calls;          /* library calls, repeats and cross checks included */
+   double seconds[N_FN];    /* time in the top-level calls */
+   double max_seconds[N_FN];
+   long status_count[N_FN][8];
+   long viol[N_KIND];
+   long viol_fn[N_KIND][N_FN];
+   long viol_printed[N_KIND][N_FN];
+   long failed_valid[4][N_FAMILY][6]; /* failure-in-domain by model, family, status */
+} shared_t;
+
+static shared_t *shm;
+static unsigned long long opt_seed = 20260309ULL;
+static long opt_calls = 100000, opt_only = -1;
+static double opt_timeout = 2.0;
+static long opt_max_hangs = 5, opt_max_print = 3;
+static int opt_list = 0;
+
+static double now(void) {
+   struct timespec ts;
+   clock_gettime(CLOCK_MONOTONIC, &ts);
+   return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* ------------------------------------------------------------------- random */
+
+typedef struct {
+   uint64_t s;
+} rng_t;
+
+static uint64_t next_u64(rng_t *r) { /* splitmix64 */
+   uint64_t z = (r->s += 0x9E3779B97F4A7C15ULL);
+   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+   return z ^ (z >> 31);
+}
+static double unif(rng_t *r) { return (next_u64(r) >> 11) * 0x1.0p-53; }
+static int below(rng_t *r, int n) { return (int)(unif(r) * n); }
+static double log_unif(rng_t *r, double lo, double hi) {
+   return exp(log(lo) + unif(r) * (log(hi) - log(lo)));
+}
+static double from_bits(uint64_t u) {
+   double x;
+   memcpy(&x, &u, sizeof x);
+   return x;
+}
+static uint64_t bits_of(double x) {
+   uint64_t u;
+   memcpy(&u, &x, sizeof u);
+   return u;
+}
+
+/* Values every double argument is tried with. */
+static double special(rng_t *r) {
+   static double v[64];
+   static int n = 0;
+   if (n == 0) {
+      double s[] = {NAN, -NAN, INFINITY, -INFINITY, 0.0, -0.0, DBL_MIN, DBL_TRUE_MIN,
+                    -DBL_TRUE_MIN, 1e-310, DBL_MIN * 0.5, DBL_MAX, -DBL_MAX,
+                    nextafter(DBL_MAX, 0), 1e300, 1e200, 1e161, 1e155, 1e100, 1e20,
+                    1e-300, 1e-160, 1e-20, 1e-12, 1e-8, DBL_EPSILON, 0.5,
+                    nextafter(0.5, 1), nextafter(0.5, 0), 0.25, 1.0, -1.0, 0.3, 3.0, 5.0,
+                    100.0, 1e3, 1e6, -1e-300, 2.0, WA_ALPHA_MIN, WA_ALPHA_MAX,
+                    WA_MU_MIN, WA_MU_MAX, nextafter(WA_ALPHA_MIN, 0),
+                    nextafter(WA_ALPHA_MAX, INFINITY), nextafter(WA_MU_MIN, 0),
+                    nextafter(WA_MU_MAX, INFINITY), 1e-6, 1e-4};
+      n = (int)(sizeof s / sizeof s[0]);
+      memcpy(v, s, sizeof s);
+   }
+   return v[below(r, n)];
+}
+
+/* A parameter (alpha or mu): typical, anything positive, special, negative, raw bits. */
+static double gen_param(rng_t *r, double lo, double hi, int allow_zero) {
+   double u = unif(r);
+   if (u < 0.45) return log_unif(r, lo, hi);
+   if (u < 0.50 && allow_zero) return 0.0;
+   if (u < 0.70) return log_unif(r, DBL_TRUE_MIN, DBL_MAX);
+   if (u < 0.90) return special(r);
+   if (u < 0.96) return -log_unif(r, 1e-6, 1e6);
+   return from_bits(next_u64(r));
+}
+
+/* An a*: inside [0, 1/2], near its ends, special, outside, raw bits. */
+static double gen_a(rng_t *r) {
+   double u = unif(r);
+   if (u < 0.45) return 0.5 * unif(r);
+   if (u < 0.55) return log_unif(r, DBL_TRUE_MIN, 1e-2);
+   if (u < 0.65) return 0.5 - log_unif(r, 1e-17, 1e-2);
+   if (u < 0.85) return special(r);
+   if (u < 0.95) return 0.5 + log_unif(r, 1e-16, 1e3) * (unif(r) < 0.5 ? -1e-300 : 1.0);
+   return from_bits(next_u64(r));
+}
+
+static int gen_model(rng_t *r) {
+   static const int bad[] = {-1, 4, 5, 100, INT_MIN, INT_MAX, -4};
+   if (unif(r) < 0.93) return below(r, 4);
+   return bad[below(r, 7)];
+}
+
+/* Array capacity: small, usual, negative, huge. */
+#define BIG (1 << 20)  /* elements of each output array */
+#define FILL 4096      /* elements filled with a sentinel and checked */
+#define GUARD 8        /* guard elements on each side */
+static int gen_capacity(rng_t *r) {
+   static const int c[] = {0, 1, 2, 3, 5, 8, 64, 512, 4096, -1, INT_MIN, INT_MAX};
+   double u = unif(r);
+   if (u < 0.5) return c[6 + below(r, 3)];
+   if (u < 0.8) return c[below(r, 6)];
+   if (u < 0.9) return below(r, 40);
+   return c[9 + below(r, 3)];
+}
+
+/* Message capacity: every size from 0 to past the longest message, negative, huge. */
+#define MSG_REAL 4096
+static int gen_msgcap(rng_t *r) {
+   double u = unif(r);
+   if (u < 0.4) return below(r, 300);
+   if (u < 0.6) return below(r, 4);
+   if (u < 0.8) return 256 + below(r, 4);
+   if (u < 0.9) return unif(r) < 0.5 ? -1 : INT_MIN;
+   return MSG_REAL - 2 * GUARD;
+}
+
+/* ---------------------------------------------------------------- a call */
+
+typedef struct {
+   long index;
+   int family, msg; /* msg: the _msg variant */
+   int model, capacity, msgcap, msg_null, code;
+   double alpha, mu, a;
+   unsigned null_mask; /* bit k: pointer argument k is NULL */
+   int n_mu;
+   double mus[8];
+   char repro[1024];
+} call_t;
+
+/* Output buffers with guards (static: BIG elements each, only touched pages count). */
+static double dbuf[3][GUARD + BIG + GUARD];
+static int ibuf[3][GUARD + BIG + GUARD];
+static double dscalar[2][1 + 2 * GUARD];
+static int iscalar[2][1 + 2 * GUARD];
+static unsigned char mbuf[MSG_REAL];
+static const uint64_t D_SENT = 0x7FF8DEAD0000BEEFULL; /* a NaN nobody else writes */
+static const int I_SENT = 0x5A5A5A5A;
+static const unsigned char M_SENT = 0xA5;
+
+static double d_sent(void) { return from_bits(D_SENT); }
+static int is_dsent(double x) { return bits_of(x) == D_SENT; }
+
+/* Fill n + 2 GUARD elements of every buffer (n <= FILL). */
+static void fill_buffers(int n) {
+   int k, i;
+   if (n < 0) n = 0;
+   if (n > FILL) n = FILL;
+   for (k = 0; k < 3; k++)
+      for (i = 0; i < n + 2 * GUARD; i++) {
+         dbuf[k][i] = d_sent();
+         ibuf[k][i] = I_SENT;
+      }
+   for (k = 0; k < 2; k++)
+      for (i = 0; i < 1 + 2 * GUARD; i++) {
+         dscalar[k][i] = d_sent();
+         iscalar[k][i] = I_SENT;
+      }
+   memset(mbuf, M_SENT, sizeof mbuf);
+}
+
+static double *D(int k) { return &dbuf[k][GUARD]; }
+static int *I(int k) { return &ibuf[k][GUARD]; }
+static double *DS(int k) { return &dscalar[k][GUARD]; }
+static int *IS(int k) { return &iscalar[k][GUARD]; }
+
+/* ------------------------------------------------------------- reporting */
+
+static int in_child = 0;
+
+static void violation(const call_t *c, int kind, const char *fmt, ...) {
+   int fn = 2 * c->family + c->msg;
+   va_list ap;
+   shm->viol[kind]++;
+   shm->viol_fn[kind][fn]++;
+   if (opt_list) return;
+   if (shm->viol_printed[kind][fn] >= opt_max_print && opt_only < 0) return;
+   shm->viol_printed[kind][fn]++;
+   printf("VIOLATION %s%s (call %ld, %s%s): ", kind_name[kind],
+          kind_severe[kind] ? "" : " [mild]", c->index, family_name[c->family],
+          c->msg ? "_msg" : "");
+   va_start(ap, fmt);
+   vprintf(fmt, ap);
+   va_end(ap);
+   printf("\n   repro: %s\n   replay: fpm test --profile release --target fuzz -- --seed %llu "
+          "--only %ld\n", c->repro, opt_seed, c->index);
+   fflush(stdout);
+}
+
+/* A double as C source: round-trips, NaN/Inf spelled as macros. */
+static const char *cd(char *out, double x) {
+   if (isnan(x))
+      strcpy(out, signbit(x) ? "-NAN" : "NAN");
+   else if (isinf(x))
+      strcpy(out, x > 0 ? "INFINITY" : "-INFINITY");
+   else if (x == 0)
+      strcpy(out, signbit(x) ? "-0.0" : "0.0");
+   else
+      sprintf(out, "%.17g", x);
+   return out;
+}
+static const char *ci(char *out, int v) {
+   if (v == INT_MIN)
+      strcpy(out, "INT_MIN");
+   else if (v == INT_MAX)
+      strcpy(out, "INT_MAX");
+   else
+      sprintf(out, "%d", v);
+   return out;
+}
+static const char *ptr_name(const call_t *c, int k, const char *name) {
+   return (c->null_mask >> k) & 1u ? "NULL" : name;
+}
+
+static void make_repro(call_t *c) {
+   char a1[40], a2[40], a3[40], cap[16], mcap[16], mu[400];
+   const char *sfx = c->msg ? "_msg" : "";
+   char msgpart[64] = "";
+   int k;
+   if (c->msg)
+      sprintf(msgpart, ", %s, %s", c->msg_null ? "NULL" : "msg", ci(mcap, c->msgcap));
+   switch (c->family) {
+   case F_WESTERGAARD_LOAD:
+      sprintf(c->repro, "wa_westergaard_load(%s)", cd(a1, c->a));
+      break;
+   case F_JKR_LOAD:
+      sprintf(c->repro, "wa_jkr_load(%s, %s)", cd(a1, c->alpha), cd(a2, c->a));
+      break;
+   case F_STATUS_MESSAGE:
+      sprintf(c->repro, "wa_status_message(%s)", ci(a1, c->code));
+      break;
+   case F_VERSION:
+      strcpy(c->repro, "wa_version()");
+      break;
+   case F_EQUILIBRIUM:
+      sprintf(c->repro, "wa_equilibrium%s(%d, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+              cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ptr_name(c, 0, "&c"),
+              ptr_name(c, 1, "&P"), ptr_name(c, 2, "&z"), msgpart);
+      break;
+   case F_ROOTS:
+      sprintf(c->repro, "wa_roots%s(%d, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+              cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ci(cap, c->capacity),
+              ptr_name(c, 0, "c"), ptr_name(c, 1, "P"), ptr_name(c, 2, "z"),
+              ptr_name(c, 3, "&n"), msgpart);
+      break;
+   case F_TRACE_BRANCH:
+      sprintf(c->repro, "wa_trace_branch%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+              c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
+              ptr_name(c, 0, "a"), ptr_name(c, 1, "c"), ptr_name(c, 2, "P"),
+              ptr_name(c, 3, "z"), ptr_name(c, 4, "s"), ptr_name(c, 5, "e"),
+              ptr_name(c, 6, "&n"), msgpart);
+      break;
+   case F_CRITICAL_FORCES:
+      sprintf(c->repro, "wa_critical_forces%s(%d, %s, %s, %s, %s%s)", sfx, c->model,
+              cd(a1, c->alpha), cd(a2, c->mu), ptr_name(c, 0, "&P_fc"),
+              ptr_name(c, 1, "&P_pf"), msgpart);
+      break;
+   case F_LOAD_PATH:
+      sprintf(c->repro,
+              "wa_load_path%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+              c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
+              ptr_name(c, 0, "stage"), ptr_name(c, 1, "event"), ptr_name(c, 2, "a"),
+              ptr_name(c, 3, "c"), ptr_name(c, 4, "P"), ptr_name(c, 5, "&n"),
+              ptr_name(c, 6, "&P_fc"), ptr_name(c, 7, "&P_pf"), msgpart);
+      break;
+   case F_CRITICAL_SWEEP:
+      if (c->n_mu > 0 && !(c->null_mask & 1u)) {
+         strcpy(mu, "(double[]){");
+         for (k = 0; k < c->n_mu; k++) {
+            strcat(mu, cd(a3, c->mus[k]));
+            if (k + 1 < c->n_mu) strcat(mu, ", ");
+         }
+         strcat(mu, "}");
+      } else {
+         strcpy(mu, ptr_name(c, 0, "mu"));
+      }
+      sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+              c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
+              ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
+              msgpart);
+      break;
+   }
+}
+
+/* ------------------------------------------------------------- generation */
+
+static int valid_a(double x);
+
+static void gen_call(long index, call_t *c) {
+   rng_t r;
+   int total = 0, k, u, valid;
+   double u2;
+   memset(c, 0, sizeof *c);
+   r.s = opt_seed * 0xD1B54A32D192ED03ULL ^ (uint64_t)index * 0x9E3779B97F4A7C15ULL;
+   next_u64(&r);
+   c->index = index;
+   for (k = 0; k < N_FAMILY; k++) total += family_weight[k];
+   u = below(&r, total);
+   for (k = 0; k < N_FAMILY; k++) {
+      if (u < family_weight[k]) break;
+      u -= family_weight[k];
+   }
+   c->family = k;
+   c->msg = has_msg[k] && unif(&r) < 0.5;
+   valid = unif(&r) < 0.5; /* half the calls: every argument valid, pointers too */
+   c->model = valid ? below(&r, 4) : gen_model(&r);
+   if (k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP && unif(&r) < 0.5) {
+      /* the slow functions: typical parameters more often */
+      c->alpha = log_unif(&r, 1e-2, 10.0);
+      c->mu = unif(&r) < 0.05 ? 0.0 : log_unif(&r, 1e-2, 30.0);
+   } else if (valid) {
+      c->alpha = unif(&r) < 0.6 ? log_unif(&r, 1e-3, 1e2)
+                                : log_unif(&r, WA_ALPHA_MIN, WA_ALPHA_MAX);
+      u2 = unif(&r);
+      c->mu = u2 < 0.05 ? 0.0 : u2 < 0.6 ? log_unif(&r, 1e-3, 1e3)
+                                        : log_unif(&r, WA_MU_MIN, WA_MU_MAX);
+   } else {
+      c->alpha = gen_param(&r, 1e-3, 1e2, 0);
+      c->mu = gen_param(&r, 1e-3, 1e3, 1);
+   }
+   c->a = gen_a(&r);
+   if (valid && !valid_a(c->a)) c->a = 0.5 * unif(&r);
+   c->capacity = gen_capacity(&r);
+   c->msgcap = gen_msgcap(&r);
+   c->msg_null = unif(&r) < 0.1;
+   c->code = unif(&r) < 0.7 ? below(&r, 8) - 1 : (int)next_u64(&r);
+   if (unif(&r) < 0.12) c->null_mask = 1u << below(&r, 8);   /* one NULL pointer */
+   if (unif(&r) < 0.03) c->null_mask |= (unsigned)next_u64(&r) & 0xFFu;
+   if (valid) {
+      c->null_mask = 0;
+      if (c->capacity < 0) c->capacity = 64;
+   }
+   if (k == F_CRITICAL_SWEEP) {
+      u2 = unif(&r);
+      c->n_mu = valid && u2 < 0.15 ? 1 : u2 < 0.1 ? 0 : u2 < 0.15 ? (unif(&r) < 0.5 ? -1 : INT_MIN) : 1 + below(&r, 4);
+      for (u = 0; u < 8; u++)
+         c->mus[u] = unif(&r) < 0.7 || valid ? log_unif(&r, 1e-2, 30.0)
+                                             : gen_param(&r, 1e-3, 1e3, 1);
+   }
+   make_repro(c);
+}
+
+/* ----------------------------------------------------------------- checks */
+
+static int valid_model(int m) { return m >= 0 && m <= 3; }
+/* The supported domain of the header (WA_ALPHA_MIN ...): inside it a parameter must be
+   accepted, outside it refused. */
+static int valid_alpha(double x) { return x >= WA_ALPHA_MIN && x <= WA_ALPHA_MAX; }
+static int valid_mu(double x) { return x == 0 || (x >= WA_MU_MIN && x <= WA_MU_MAX); }
+static int valid_a(double x) { return x >= 0 && x <= 0.5; }
+
+static void check_guards(const call_t *c, int n_d, int n_i, int filled) {
+   int k, i;
+   int tail = filled >= 0 && filled <= FILL; /* is the guard after the array filled? */
+   if (filled < 0) filled = 0;
+   for (k = 0; k < n_d; k++)
+      for (i = 0; i < GUARD; i++)
+         if (!is_dsent(dbuf[k][i]) || (tail && !is_dsent(dbuf[k][GUARD + filled + i]))) {
+            violation(c, K_OVERRUN, "double array %d written outside [0, %d)", k, filled);
+            break;
+         }
+   for (k = 0; k < n_i; k++)
+      for (i = 0; i < GUARD; i++)
+         if (ibuf[k][i] != I_SENT || (tail && ibuf[k][GUARD + filled + i] != I_SENT)) {
+            violation(c, K_OVERRUN, "int array %d written outside [0, %d)", k, filled);
+            break;
+         }
+   for (k = 0; k < 2; k++)
+      for (i = 0; i < GUARD; i++)
+         if (!is_dsent(dscalar[k][i]) || !is_dsent(dscalar[k][GUARD + 1 + i]) ||
+             iscalar[k][i] != I_SENT || iscalar[k][GUARD + 1 + i] != I_SENT) {
+            violation(c, K_OVERRUN, "scalar %d: a neighbour was written", k);
+            break;
+         }
+}
+
+/* Elements [from, to) of the arrays must still hold the sentinel. */
+static void check_untouched(const call_t *c, int n_d, int n_i, int from, int to) {
+   int k, i;
+   if (from < 0) from = 0;
+   if (to > FILL) to = FILL;
+   for (k = 0; k < n_d; k++)
+      for (i = from; i < to; i++)
+         if (!is_dsent(D(k)[i])) {
+            violation(c, K_BEYOND, "double array %d element %d written (count %d)", k, i, from);
+            return;
+         }
+   for (k = 0; k < n_i; k++)
+      for (i = from; i < to; i++)
+         if (I(k)[i] != I_SENT) {
+            violation(c, K_BEYOND, "int array %d element %d written (count %d)", k, i, from);
+            return;
+         }
+}
+
+static void check_message(const call_t *c, int st, int expect_valid_rejection) {
+   int cap = c->msgcap, i, len = -1;
+   unsigned char *m = mbuf + GUARD;
+   if (!c->msg) return;
+   for (i = 0; i < GUARD; i++)
+      if (mbuf[i] != M_SENT) {
+         violation(c, K_MESSAGE, "byte %d before the message buffer written", i - GUARD);
+         break;
+      }
+   if (c->msg_null || cap <= 0) {
+      for (i = GUARD; i < MSG_REAL; i++)
+         if (mbuf[i] != M_SENT) {
+            violation(c, K_MESSAGE, "message written although %s",
+                      c->msg_null ? "NULL was passed" : "capacity <= 0");
+            break;
+         }
+      return;
+   }
+   for (i = 0; i < cap && i < MSG_REAL - GUARD; i++)
+      if (m[i] == 0) {
+         len = i;
+         break;
+      }
+   if (len < 0) {
+      violation(c, K_MESSAGE, "no NUL within message_capacity %d", cap);
+      return;
+   }
+   if (cap <= MSG_REAL - 2 * GUARD)
+      for (i = cap; i < cap + GUARD; i++)
+         if (m[i] != M_SENT) {
+            violation(c, K_MESSAGE, "byte %d past message_capacity %d written", i, cap);
+            break;
+         }
+   if (st == WA_OK && len != 0)
+      violation(c, K_MESSAGE_TEXT, "WA_OK with message '%s'", (char *)m);
+   if (st != WA_OK && len == 0 && cap > 1)
+      violation(c, K_MESSAGE_TEXT, "status %d with an empty message", st);
+   if (st == WA_INVALID_ARGUMENT && expect_valid_rejection &&
+       (strstr((char *)m, "inf)") || strstr((char *)m, "inf]")))
+      violation(c, K_RANGE_MESSAGE, "finite arguments rejected: '%s'", (char *)m);
+}
+
+/* Status: documented for the function; invalid arguments rejected. Returns 1 when the
+   arguments are all valid by the header. */
+static void check_status(const call_t *c, int st, int allowed_mask, int invalid) {
+   if (st < 0 || st > 5 || !((allowed_mask >> st) & 1))
+      violation(c, K_STATUS, "status %d (%s)", st, wa_status_message(st));
+   if (invalid && st != WA_INVALID_ARGUMENT)
+      violation(c, K_INVALID_ACCEPTED, "status %d", st);
+   if (!invalid && st == WA_INVALID_ARGUMENT)
+      violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT");
+   if (!invalid && (st == WA_NO_SOLUTION || st == WA_NOT_CONVERGED || st == WA_NUMERICAL_ERROR))
+   {
+      shm->failed_valid[c->model][c->family][st]++;
+      violation(c, K_FAILED_VALID, "status %d (%s)", st, wa_status_message(st));
+   }
+}
+
+static void count_status(const call_t *c, int st) {
+   int fn = 2 * c->family + c->msg;
+   shm->status_count[fn][st >= 0 && st <= 5 ? st : 6]++;
+}
+
+/* FNV-1a over a byte range. */
+static uint64_t fnv(uint64_t h, const void *p, size_t n) {
+   const unsigned char *b = (const unsigned char *)p;
+   size_t i;
+   for (i = 0; i < n; i++) h = (h ^ b[i]) * 0x100000001B3ULL;
+   return h;
+}
+
+/* Digest of every output area (arrays up to `used`, scalars, the message). */
+static uint64_t digest(int st, int used) {
+   uint64_t h = fnv(0xCBF29CE484222325ULL, &st, sizeof st);
+   int k;
+   if (used < 0) used = 0;
+   if (used > FILL) used = FILL;
+   for (k = 0; k < 3; k++) {
+      h = fnv(h, D(k), used * sizeof(double));
+      h = fnv(h, I(k), used * sizeof(int));
+   }
+   h = fnv(h, dscalar, sizeof dscalar);
+   h = fnv(h, iscalar, sizeof iscalar);
+   return h;
+}
+
+/* ----------------------------------------------------------- the families */
+
+static char *MSG(const call_t *c) { return c->msg_null ? NULL : (char *)mbuf + GUARD; }
+#define P(k, ptr) (((c->null_mask >> (k)) & 1u) ? NULL : (ptr))
+
+static int ok_state(double a, double cs, int z) {
+   if (!(a >= 0 && a <= 0.5 && cs >= a && cs <= 0.5)) return 0;
+   if (z == WA_ZONE_INSIDE) return cs < 0.5;
+   if (z == WA_ZONE_WHOLE_PERIOD) return cs == 0.5 && a < 0.5;
+   if (z == WA_ZONE_FULL_CONTACT) return a == 0.5 && cs == 0.5;
+   return 0;
+}
+
+static void lib_call(void) { shm->lib_calls++; }
+
+/* wa_equilibrium[_msg] */
+static int do_equilibrium(const call_t *c, double a, int msg) {
+   lib_call();
+   if (msg)
+      return wa_equilibrium_msg(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
+                                P(2, IS(0)), MSG(c), c->msgcap);
+   return wa_equilibrium(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
+                         P(2, IS(0)));
+}
+
+static int run_equilibrium(const call_t *c, int msg) {
+   int st;
+   fill_buffers(0);
+   st = do_equilibrium(c, c->a, msg);
+   return st;
+}
+
+static void check_equilibrium(const call_t *c, int st, int invalid) {
+   double cs = *DS(0), p = *DS(1);
+   int z = *IS(0);
+   check_status(c, st, 0x2F, invalid); /* 0, 1, 2, 3, 5 */
+   if (st == WA_OK) {
+      if (c->null_mask & 7u) return;
+      if (!isfinite(cs) || isnan(p) ||
+          (isinf(p) && !(c->model == WA_MODEL_JKR && c->a == 0.5 && p < 0)))
+         violation(c, K_NONFINITE, "c* %.17g P* %.17g zone %d", cs, p, z);
+      else if (!ok_state(c->a, cs, z) ||
+               (c->model <= WA_MODEL_JKR && cs != c->a))
+         violation(c, K_STATE, "a* %.17g c* %.17g zone %d", c->a, cs, z);
+   } else {
+      if ((!(c->null_mask & 1u) && !isnan(cs)) || (!(c->null_mask & 2u) && !isnan(p)) ||
+          (!(c->null_mask & 4u) && z != 0))
+         violation(c, K_FAIL_OUTPUT, "status %d: c* %.17g P* %.17g zone %d (want NaN NaN 0)",
+                   st, cs, p, z);
+   }
+}
+
+/* wa_roots[_msg] */
+static int run_roots(const call_t *c, int msg) {
+   fill_buffers(c->capacity);
+   lib_call();
+   if (msg)
+      return wa_roots_msg(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)),
+                          P(1, D(1)), P(2, I(0)), P(3, IS(0)), MSG(c), c->msgcap);
+   return wa_roots(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)), P(1, D(1)),
+                   P(2, I(0)), P(3, IS(0)));
+}
+
+static void check_roots(const call_t *c, int st, int invalid) {
+   int n = *IS(0), k, m;
+   check_status(c, st, 0x3F, invalid);
+   if (c->null_mask & 8u) return; /* no count */
+   if (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) {
+      if (n < 0 || (st == WA_OK && n > c->capacity) ||
+          (st == WA_CAPACITY_TOO_SMALL && n <= c->capacity))
+         violation(c, K_COUNT, "status %d with n_roots %d, capacity %d", st, n, c->capacity);
+      if (n < 0) return;
+      m = n < c->capacity ? n : c->capacity;
+      if (m > FILL) m = FILL;
+      for (k = 0; k < m; k++) {
+         double cs = D(0)[k], p = D(1)[k];
+         int z = I(0)[k];
+         if (!isfinite(cs) || isnan(p) ||
+             (isinf(p) && !(c->model == WA_MODEL_JKR && c->a == 0.5 && p < 0))) {
+            violation(c, K_NONFINITE, "root %d of %d: c* %.17g P* %.17g", k, n, cs, p);
+            break;
+         }
+         if (!ok_state(c->a, cs, z) || (k > 0 && z == WA_ZONE_INSIDE &&
+                                         (I(0)[k - 1] != WA_ZONE_INSIDE || D(0)[k - 1] > cs))) {
+            violation(c, K_STATE, "root %d of %d: a* %.17g c* %.17g zone %d (previous c* %.17g "
+                      "zone %d)", k, n, c->a, cs, z, k > 0 ? D(0)[k - 1] : NAN,
+                      k > 0 ? I(0)[k - 1] : 0);
+            break;
+         }
+      }
+      if (c->capacity >= 0) check_untouched(c, 2, 1, m, c->capacity);
+   } else if (n != 0) {
+      violation(c, K_FAIL_OUTPUT, "status %d with n_roots %d (want 0)", st, n);
+   }
+}
+
+/* wa_trace_branch[_msg] */
+static int run_branch(const call_t *c, int msg) {
+   fill_buffers(c->capacity);
+   lib_call();
+   if (msg)
+      return wa_trace_branch_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
+                                 P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
+                                 P(6, IS(0)), MSG(c), c->msgcap);
+   return wa_trace_branch(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
+                          P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)), P(6, IS(0)));
+}
+
+static void check_branch(const call_t *c, int st, int invalid) {
+   int n = *IS(0), k, m;
+   check_status(c, st, 0x3F, invalid);
+   if (c->null_mask & 64u) return;
+   if (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) {
+      if (n < 2 || (st == WA_OK && n > c->capacity) ||
+          (st == WA_CAPACITY_TOO_SMALL && n <= c->capacity))
+         violation(c, K_COUNT, "status %d with n_points %d, capacity %d", st, n, c->capacity);
+      if (n < 0) return;
+      m = n < c->capacity ? n : c->capacity;
+      if (m > FILL) m = FILL;
+      for (k = 0; k < m; k++) {
+         double a = D(0)[k], cs = D(1)[k], p = D(2)[k];
+         int z = I(0)[k], s = I(1)[k], e = I(2)[k];
+         if (!isfinite(a) || !isfinite(cs) || isnan(p) ||
+             (isinf(p) && !(c->model == WA_MODEL_JKR && a == 0.5 && p < 0))) {
+            violation(c, K_NONFINITE, "point %d of %d: a* %.17g c* %.17g P* %.17g", k, n, a,
+                      cs, p);
+            break;
+         }
+         if (!ok_state(a, cs, z) || (s != 0 && s != 1) || e < WA_EVENT_NONE ||
+             e > WA_EVENT_A_TURN || (e >= WA_EVENT_JUMP_START && e <= WA_EVENT_PULL_OFF) ||
+             (e == WA_EVENT_FOLD && s != 0) ||
+             (k == 0 && e != WA_EVENT_BRANCH_END) ||
+             (k == n - 1 && (e != WA_EVENT_BRANCH_END ||
+                             a != (c->model == WA_MODEL_JKR ? 0.5 - 1e-9 : 0.5)))) {
+            violation(c, K_STATE, "point %d of %d: a* %.17g c* %.17g zone %d stable %d "
+                      "event %d", k, n, a, cs, z, s, e);
+            break;
+         }
+      }
+      /* inside, BRANCH_END points come in pairs: one piece's end, the next one's start */
+      if (m == n && k == m)
+         for (k = 1; k < n - 1; k++) {
+            if (I(2)[k] != WA_EVENT_BRANCH_END) continue;
+            if (k + 1 >= n - 1 || I(2)[k + 1] != WA_EVENT_BRANCH_END ||
+                (k + 2 < n - 1 && I(2)[k + 2] == WA_EVENT_BRANCH_END)) {
+               violation(c, K_STATE, "BRANCH_END at point %d of %d is not one of a pair of "
+                         "consecutive piece ends", k, n);
+               break;
+            }
+            k++;
+         }
+      if (c->capacity >= 0) check_untouched(c, 3, 3, m, c->capacity);
+   } else if (n != 0) {
+      violation(c, K_FAIL_OUTPUT, "status %d with n_points %d (want 0)", st, n);
+   }
+}
+
+/* wa_critical_forces[_msg] */
+static int do_critical(const call_t *c, double mu, int msg, double *fc, double *pf) {
+   lib_call();
+   if (msg)
+      return wa_critical_forces_msg(c->model, c->alpha, mu, fc, pf, MSG(c), c->msgcap);
+   return wa_critical_forces(c->model, c->alpha, mu, fc, pf);
+}
+
+static int run_critical(const call_t *c, int msg) {
+   fill_buffers(0);
+   return do_critical(c, c->mu, msg, P(0, DS(0)), P(1, DS(1)));
+}
+
+static int ok_forces(int model, double fc, double pf) {
+   return isfinite(fc) && (isfinite(pf) || (model == WA_MODEL_JKR && pf == -INFINITY));
+}
+
+static void check_critical(const call_t *c, int st, int invalid) {
+   double fc = *DS(0), pf = *DS(1);
+   check_status(c, st, 0x2F, invalid);
+   if (st == WA_OK) {
+      if (!(c->null_mask & 3u) && !ok_forces(c->model, fc, pf))
+         violation(c, K_NONFINITE, "P_fc %.17g P_pf %.17g", fc, pf);
+   } else if ((!(c->null_mask & 1u) && !isnan(fc)) || (!(c->null_mask & 2u) && !isnan(pf))) {
+      violation(c, K_FAIL_OUTPUT, "status %d: P_fc %.17g P_pf %.17g (want NaN)", st, fc, pf);
+   }
+}
+
+/* wa_load_path[_msg] */
+static int run_path(const call_t *c, int msg) {
+   fill_buffers(c->capacity);
+   lib_call();
+   if (msg)
+      return wa_load_path_msg(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
+                              P(2, D(0)), P(3, D(1)), P(4, D(2)), P(5, IS(0)), P(6, DS(0)),
+                              P(7, DS(1)), MSG(c), c->msgcap);
+   return wa_load_path(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
+                       P(2, D(0)), P(3, D(1)), P(4, D(2)), P(5, IS(0)), P(6, DS(0)),
+                       P(7, DS(1)));
+}
+
+static void check_path(const call_t *c, int st, int invalid) {
+   int n = *IS(0), k, m;
+   double fc = *DS(0), pf = *DS(1);
+   check_status(c, st, 0x3F, invalid);
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) {
+      if ((!(c->null_mask & 32u) && n != 0) || (!(c->null_mask & 64u) && !isnan(fc)) ||
+          (!(c->null_mask & 128u) && !isnan(pf)))
+         violation(c, K_FAIL_OUTPUT, "status %d: n_events %d P_fc %.17g P_pf %.17g (want 0, "
+                   "NaN)", st, n, fc, pf);
+      return;
+   }
+   if (c->null_mask & 0xE0u) return;
+   {
+      if (n < 1 || n > 64 || (st == WA_OK && n > c->capacity) ||
+          (st == WA_CAPACITY_TOO_SMALL && n <= c->capacity))
+         violation(c, K_COUNT, "status %d with n_events %d, capacity %d", st, n, c->capacity);
+      if (!ok_forces(c->model, fc, pf))
+         violation(c, K_NONFINITE, "status %d: P_fc %.17g P_pf %.17g", st, fc, pf);
+      if (n < 0) return;
+      m = n < c->capacity ? n : c->capacity;
+      if (m > FILL) m = FILL;
+      for (k = 0; k < m; k++) {
+         int sg = I(0)[k], e = I(1)[k];
+         double a = D(0)[k], cs = D(1)[k], p = D(2)[k];
+         if (!isfinite(a) || !isfinite(cs) || isnan(p) ||
+             (isinf(p) && !(c->model == WA_MODEL_JKR && p < 0))) {
+            violation(c, K_NONFINITE, "event %d of %d: a* %.17g c* %.17g P* %.17g", k, n, a,
+                      cs, p);
+            break;
+         }
+         if ((sg != WA_STAGE_LOADING && sg != WA_STAGE_UNLOADING) || e < WA_EVENT_NONE ||
+             e > WA_EVENT_BRANCH_END || !(a >= 0 && a <= 0.5 && cs >= a && cs <= 0.5) ||
+             (k > 0 && sg < I(0)[k - 1])) {
+            violation(c, K_STATE, "event %d of %d: stage %d event %d a* %.17g c* %.17g", k, n,
+                      sg, e, a, cs);
+            break;
+         }
+      }
+      if (c->capacity >= 0) check_untouched(c, 3, 2, m, c->capacity);
+   }
+}
+
+/* wa_critical_sweep[_msg]: mu[] in dbuf[0] (read only), outputs P_fc, P_pf in dbuf[1..2],
+   mechanisms in ibuf[0..1]. */
+static int run_sweep(const call_t *c, int msg) {
+   int n = c->n_mu > 0 ? c->n_mu : 0;
+   fill_buffers(n);
+   memcpy(D(0), c->mus, n * sizeof(double));
+   lib_call();
+   if (msg)
+      return wa_critical_sweep_msg(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)),
+                                   P(2, D(2)), P(3, I(0)), P(4, I(1)), MSG(c), c->msgcap);
+   return wa_critical_sweep(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)), P(2, D(2)),
+                            P(3, I(0)), P(4, I(1)));
+}
+
+static void check_sweep(const call_t *c, int st, int invalid) {
+   int n = c->n_mu > 0 ? c->n_mu : 0, k, n_failed = 0;
+   unsigned nm = c->null_mask;
+   check_status(c, st, 0x2F, invalid);
+   if (st != WA_OK && st != WA_INVALID_ARGUMENT && !nm) {
+      /* a numerical failure keeps the good rows (issue 9): each row is either a failed one
+         (NaN NaN -1 -1) or well formed, and at least one failed */
+      for (k = 0; k < n; k++) {
+         double fc = D(1)[k], pf = D(2)[k];
+         int fm = I(0)[k], pm = I(1)[k];
+         if (isnan(fc) && isnan(pf) && fm == -1 && pm == -1) {
+            n_failed++;
+         } else if (!ok_forces(c->model, fc, pf) || fm < WA_MECHANISM_GRADUAL ||
+                    fm > WA_MECHANISM_SNAP || pm < WA_MECHANISM_GRADUAL ||
+                    pm > WA_MECHANISM_JUMP_CASE2) {
+            violation(c, K_FAIL_OUTPUT, "status %d, row %d: %.17g %.17g %d %d (want a good row "
+                      "or NaN NaN -1 -1)", st, k, fc, pf, fm, pm);
+            return;
+         }
+      }
+      if (n_failed == 0) violation(c, K_FAIL_OUTPUT, "status %d but no failed row", st);
+      return;
+   }
+   for (k = 0; k < n; k++)
+      if (memcmp(&D(0)[k], &c->mus[k], sizeof(double)) != 0)
+         violation(c, K_OVERRUN, "the input mu[%d] was modified", k);
+   for (k = 0; k < n; k++) {
+      double fc = D(1)[k], pf = D(2)[k];
+      int fm = I(0)[k], pm = I(1)[k];
+      if (st == WA_OK) {
+         if (nm & 0x1Eu) return;
+         if (!ok_forces(c->model, fc, pf)) {
+            violation(c, K_NONFINITE, "row %d: P_fc %.17g P_pf %.17g", k, fc, pf);
+            break;
+         }
+         if (fm < WA_MECHANISM_GRADUAL || fm > WA_MECHANISM_SNAP || pm < WA_MECHANISM_GRADUAL ||
+             pm > WA_MECHANISM_JUMP_CASE2) {
+            violation(c, K_STATE, "row %d: mechanisms %d %d", k, fm, pm);
+            break;
+         }
+      } else if ((!(nm & 2u) && !isnan(fc)) || (!(nm & 4u) && !isnan(pf)) ||
+                 (!(nm & 8u) && fm != -1) || (!(nm & 16u) && pm != -1)) {
+         violation(c, K_FAIL_OUTPUT, "status %d, row %d: %.17g %.17g %d %d (want NaN NaN -1 -1)",
+                   st, k, fc, pf, fm, pm);
+         break;
+      }
+   }
+}
+
+/* ------------------------------------------------------------ one call */
+
+/* Does the header call these arguments invalid (WA_INVALID_ARGUMENT expected)? */
+static int is_invalid(const call_t *c) {
+   unsigned nm = c->null_mask;
+   int cap = c->capacity;
+   switch (c->family) {
+   case F_EQUILIBRIUM:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             !valid_a(c->a) || (nm & 7u);
+   case F_ROOTS:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             !valid_a(c->a) || (nm & 8u) || cap < 0 || (cap > 0 && (nm & 7u));
+   case F_TRACE_BRANCH:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             (nm & 64u) || cap < 0 || (cap > 0 && (nm & 63u));
+   case F_CRITICAL_FORCES:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) || (nm & 3u);
+   case F_LOAD_PATH:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             (nm & 0xE0u) || cap < 0 || (cap > 0 && (nm & 31u));
+   case F_CRITICAL_SWEEP: {
+      int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
+                   (c->n_mu > 0 && (nm & 31u));
+      for (k = 0; k < c->n_mu && !(nm & 1u); k++) bad = bad || !valid_mu(c->mus[k]);
+      return bad;
+   }
+   }
+   return 0;
+}
+
+/* Only the finite numbers are passed (for the range-message check). */
+static int all_finite_valid_sign(const call_t *c) {
+   int k;
+   if (!(c->alpha > 0 && isfinite(c->alpha))) return 0;
+   if (c->family == F_CRITICAL_SWEEP) {
+      for (k = 0; k < c->n_mu; k++)
+         if (!valid_mu(c->mus[k])) return 0;
+      return 1;
+   }
+   return valid_mu(c->mu);
+}
+
+static int run_family(const call_t *c, int msg) {
+   switch (c->family) {
+   case F_EQUILIBRIUM: return run_equilibrium(c, msg);
+   case F_ROOTS: return run_roots(c, msg);
+   case F_TRACE_BRANCH: return run_branch(c, msg);
+   case F_CRITICAL_FORCES: return run_critical(c, msg);
+   case F_LOAD_PATH: return run_path(c, msg);
+   case F_CRITICAL_SWEEP: return run_sweep(c, msg);
+   }
+   return -1;
+}
+
+static void check_family(const call_t *c, int st, int invalid) {
+   switch (c->family) {
+   case F_EQUILIBRIUM: check_equilibrium(c, st, invalid); break;
+   case F_ROOTS: check_roots(c, st, invalid); break;
+   case F_TRACE_BRANCH: check_branch(c, st, invalid); break;
+   case F_CRITICAL_FORCES: check_critical(c, st, invalid); break;
+   case F_LOAD_PATH: check_path(c, st, invalid); break;
+   case F_CRITICAL_SWEEP: check_sweep(c, st, invalid); break;
+   }
+}
+
+static int used_elements(const call_t *c, int st) {
+   int n;
+   if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
+   if (c->family != F_ROOTS && c->family != F_TRACE_BRANCH && c->family != F_LOAD_PATH)
+      return 0;
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) return 0;
+   n = *IS(0);
+   if (c->null_mask & (c->family == F_ROOTS ? 8u : c->family == F_TRACE_BRANCH ? 64u : 32u))
+      return 0;
+   if (n > c->capacity) n = c->capacity;
+   return n < 0 ? 0 : n;
+}
+
+/* How many elements of each array were filled before the call (> FILL: FILL and no
+   tail guard). */
+static int filled_elements(const call_t *c) {
+   if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
+   if (c->family == F_ROOTS || c->family == F_TRACE_BRANCH || c->family == F_LOAD_PATH)
+      return c->capacity > 0 ? c->capacity : 0;
+   return 0;
+}
+
+/* Closed forms: NaN exactly outside the documented domain, the formula inside. */
+static void run_closed(const call_t *c) {
+   double a = c->a, p, s, ref;
+   lib_call();
+   if (c->family == F_WESTERGAARD_LOAD) {
+      p = wa_westergaard_load(a);
+      if (opt_only >= 0) printf("call %ld: %s\n   -> %.17g\n", c->index, c->repro, p);
+      if (!valid_a(a)) {
+         if (!isnan(p)) violation(c, K_VALUE, "P %.17g outside [0, 1/2] (want NaN)", p);
+         return;
+      }
+      s = sin(M_PI * a);
+      if (!(fabs(p - s * s) <= 1e-15)) violation(c, K_VALUE, "P %.17g, sin^2 %.17g", p, s * s);
+      if (bits_of(wa_westergaard_load(a)) != bits_of(p)) violation(c, K_NONDET, "P");
+      return;
+   }
+   p = wa_jkr_load(c->alpha, a);
+   if (opt_only >= 0) printf("call %ld: %s\n   -> %.17g\n", c->index, c->repro, p);
+   if (!valid_a(a) || !(c->alpha >= 0) || !isfinite(c->alpha)) {
+      if (!isnan(p)) violation(c, K_VALUE, "P %.17g outside the domain (want NaN)", p);
+      return;
+   }
+   if (a == 0.5) {
+      ref = c->alpha > 0 ? -INFINITY : 1.0;
+      if (p != ref) violation(c, K_VALUE, "P %.17g at a* = 1/2 (want %g)", p, ref);
+      return;
+   }
+   s = sin(M_PI * a);
+   ref = s * s - c->alpha * sqrt(s / sin(M_PI * (0.5 - a)));
+   if (isinf(ref)) {
+      if (p != ref) violation(c, K_VALUE, "P %.17g, formula %.17g", p, ref);
+   } else if (!(fabs(p - ref) <= 1e-13 * (1.0 + fabs(ref) + s * s))) {
+      violation(c, K_VALUE, "P %.17g, formula %.17g", p, ref);
+   }
+   lib_call();
+   if (bits_of(wa_jkr_load(c->alpha, a)) != bits_of(p)) violation(c, K_NONDET, "P");
+}
+
+static void run_status_message(const call_t *c) {
+   static const char *want[] = {"ok", "invalid argument", "no solution",
+                                "iteration did not converge", "output capacity too small",
+                                "numerical error"};
+   const char *m;
+   lib_call();
+   m = wa_status_message(c->code);
+   if (m == NULL) {
+      violation(c, K_VALUE, "NULL");
+      return;
+   }
+   if (strcmp(m, c->code >= 0 && c->code <= 5 ? want[c->code] : "unknown status") != 0)
+      violation(c, K_VALUE, "'%s'", m);
+   lib_call();
+   if (wa_status_message(c->code) != m) violation(c, K_NONDET, "another pointer");
+}
+
+/* wa_version: a static "MAJOR.MINOR.PATCH..." string, the same pointer every time. */
+static void run_version(const call_t *c) {
+   const char *v;
+   int major, minor, patch;
+   if (!wa_version) return; /* a library without it */
+   lib_call();
+   v = wa_version();
+   if (v == NULL || strlen(v) > 64 || sscanf(v, "%d.%d.%d", &major, &minor, &patch) != 3) {
+      violation(c, K_VALUE, "'%s'", v ? v : "(NULL)");
+      return;
+   }
+   lib_call();
+   if (wa_version() != v) violation(c, K_NONDET, "another pointer");
+}
+
+/* Cross checks after a successful call (extra library calls, same watchdog). */
+static void cross_check(const call_t *c, int st, rng_t *r) {
+   if (c->family == F_ROOTS && st == WA_OK && !(c->null_mask & 15u) && c->capacity > 0 &&
+       c->capacity <= FILL) {
+      int n = *IS(0), st2;
+      double c0 = D(0)[0], p0 = D(1)[0];
+      int z0 = I(0)[0];
+      call_t e = *c;
+      if (n > 0 && unif(r) > 0.3) return;
+      e.null_mask = 0;
+      st2 = do_equilibrium(&e, c->a, 0);
+      if ((n == 0) != (st2 != WA_OK))
+         violation(c, K_INCONSISTENT, "wa_roots: %d states; wa_equilibrium: status %d "
+                   "(c* %.17g P* %.17g)", n, st2, *DS(0), *DS(1));
+      else if (n > 0 &&
+               (fabs(*DS(0) - c0) > 1e-9 || fabs(*DS(1) - p0) > 1e-9 * (1 + fabs(p0)) ||
+                *IS(0) != z0))
+         violation(c, K_ROOTS_VALUE, "roots[0] c* %.17g P* %.17g zone %d; equilibrium c* "
+                   "%.17g P* %.17g zone %d", c0, p0, z0, *DS(0), *DS(1), *IS(0));
+   }
+   if (c->family == F_CRITICAL_SWEEP && st == WA_OK && c->n_mu > 0 && !(c->null_mask & 31u) &&
+       unif(r) < 0.5) {
+      int k = below(r, c->n_mu), st2;
+      double fc = D(1)[k], pf = D(2)[k], f2, p2;
+      st2 = do_critical(c, c->mus[k], 0, &f2, &p2);
+      if (st2 != WA_OK || bits_of(f2) != bits_of(fc) || bits_of(p2) != bits_of(pf))
+         violation(c, K_INCONSISTENT, "row %d: %.17g %.17g; wa_critical_forces(mu %.17g): "
+                   "status %d %.17g %.17g", k, fc, pf, c->mus[k], st2, f2, p2);
+   }
+   if (c->family == F_LOAD_PATH && (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) &&
+       !(c->null_mask & 0xE0u) && unif(r) < 0.3) {
+      double fc = *DS(0), pf = *DS(1), f2, p2;
+      int st2 = do_critical(c, c->mu, 0, &f2, &p2);
+      if (st2 != WA_OK || bits_of(f2) != bits_of(fc) || bits_of(p2) != bits_of(pf))
+         violation(c, K_INCONSISTENT, "P_fc %.17g P_pf %.17g; wa_critical_forces: status %d "
+                   "%.17g %.17g", fc, pf, st2, f2, p2);
+   }
+   if (c->family == F_CRITICAL_FORCES && st == WA_OK && !(c->null_mask & 3u) && unif(r) < 0.2) {
+      double fc = *DS(0), pf = *DS(1);
+      int n = -1;
+      double f2 = NAN, p2 = NAN;
+      int st2 = wa_load_path(c->model, c->alpha, c->mu, 0, NULL, NULL, NULL, NULL, NULL, &n,
+                             &f2, &p2);
+      lib_call();
+      if (st2 != WA_CAPACITY_TOO_SMALL || bits_of(f2) != bits_of(fc) ||
+          bits_of(p2) != bits_of(pf))
+         violation(c, K_INCONSISTENT, "P_fc %.17g P_pf %.17g; wa_load_path(capacity 0): "
+                   "status %d n %d %.17g %.17g", fc, pf, st2, n, f2, p2);
+   }
+}
+
+static void run_one(long index) {
+   call_t c;
+   rng_t r;
+   int st, st2, invalid, fn, used;
+   uint64_t h1, h2;
+   double t0, dt;
+   char msg1[MSG_REAL];
+
+   gen_call(index, &c);
+   fn = 2 * c.family + c.msg;
+   if (opt_list) {
+      printf("%ld %s\n", index, c.repro);
+      return;
+   }
+   r.s = opt_seed ^ ((uint64_t)index << 20) ^ 0xA24BAED4963EE407ULL;
+   shm->calls[fn]++;
+   t0 = now();
+   if (c.family == F_WESTERGAARD_LOAD || c.family == F_JKR_LOAD) {
+      run_closed(&c);
+   } else if (c.family == F_STATUS_MESSAGE) {
+      run_status_message(&c);
+   } else if (c.family == F_VERSION) {
+      run_version(&c);
+   } else {
+      invalid = is_invalid(&c);
+      st = run_family(&c, c.msg);
+      dt = now() - t0;
+      shm->seconds[fn] += dt;
+      if (dt > shm->max_seconds[fn]) shm->max_seconds[fn] = dt;
+      count_status(&c, st);
+      if (opt_only >= 0) printf("call %ld: %s\n   -> status %d\n", index, c.repro, st);
+      check_guards(&c, 3, 3, filled_elements(&c));
+      check_message(&c, st, !invalid && all_finite_valid_sign(&c));
+      check_family(&c, st, invalid);
+      if (opt_only >= 0 && c.msg && !c.msg_null && c.msgcap > 0)
+         printf("   message: '%s'\n", (char *)mbuf + GUARD);
+      /* the same call again (with the other variant: messages do not change results) */
+      used = used_elements(&c, st);
+      h1 = digest(st, used);
+      memcpy(msg1, mbuf, sizeof mbuf);
+      if (unif(&r) < 0.25) {
+         int other = c.msg;
+         call_t c2 = c;
+         if (unif(&r) < 0.5) other = !c.msg;
+         c2.msg = other;
+         st2 = run_family(&c2, other);
+         h2 = digest(st2, used_elements(&c2, st2));
+         if (st2 != st || h1 != h2)
+            violation(&c, K_NONDET, "status %d then %d (%s variant), outputs %s", st, st2,
+                      other ? "_msg" : "plain", h1 == h2 ? "equal" : "differ");
+         else if (other && c.msg && memcmp(msg1, mbuf, sizeof mbuf) != 0)
+            violation(&c, K_NONDET, "message differs");
+         else
+            cross_check(&c, st2, &r);
+      } else {
+         cross_check(&c, st, &r);
+      }
+      return;
+   }
+   dt = now() - t0;
+   shm->seconds[fn] += dt;
+   if (dt > shm->max_seconds[fn]) shm->max_seconds[fn] = dt;
+}
+
+/* ----------------------------------------------------------------- driver */
+
+static void run_range(long from, long to) {
+   long i;
+   for (i = from; i < to; i++) {
+      shm->started = now();
+      shm->current = i;
+      run_one(i);
+      shm->current = -1;
+      shm->next = i + 1;
+   }
+}
+
+static void report_process_failure(long index, int kind, const char *what) {
+   call_t c;
+   if (index >= 0) {
+      gen_call(index, &c);
+   } else {
+      memset(&c, 0, sizeof c);
+      c.index = -1;
+      strcpy(c.repro, "(outside a call)");
+   }
+   violation(&c, kind, "%s", what);
+}
+
+static long parse_long(const char *s, const char *name) {
+   char *end;
+   double v = strtod(s, &end);
+   if (*s == '\0' || *end != '\0' || !(v >= 0) || v > 9e15) {
+      fprintf(stderr, "fuzz: %s = '%s' is not a non-negative number\n", name, s);
+      exit(2);
+   }
+   return (long)v;
+}
+
+static void usage(void) {
+   fprintf(stderr, "usage: fuzz [--calls N] [--seed S] [--timeout SECONDS] [--max-hangs N]\n"
+                   "            [--max-print N] [--only INDEX] [--list]\n");
+   exit(2);
+}
+
+int main(int argc, char **argv) {
+   const char *env;
+   int i, k, fn, severe = 0;
+   long start, hangs = 0, done_calls = 0, lib_total;
+   double t_start = now();
+
+   if ((env = getenv("WA_FUZZ_CALLS")) && *env) opt_calls = parse_long(env, "WA_FUZZ_CALLS");
+   if ((env = getenv("WA_FUZZ_SEED")) && *env) opt_seed = parse_long(env, "WA_FUZZ_SEED");
+   if ((env = getenv("WA_FUZZ_TIMEOUT")) && *env) opt_timeout = atof(env);
+   for (i = 1; i < argc; i++) {
+      const char *a = argv[i];
+      if (!strcmp(a, "--list")) {
+         opt_list = 1;
+         continue;
+      }
+      if (i + 1 >= argc) usage();
+      if (!strcmp(a, "--calls"))
+         opt_calls = parse_long(argv[++i], "--calls");
+      else if (!strcmp(a, "--seed"))
+         opt_seed = parse_long(argv[++i], "--seed");
+      else if (!strcmp(a, "--timeout"))
+         opt_timeout = atof(argv[++i]);
+      else if (!strcmp(a, "--max-hangs"))
+         opt_max_hangs = parse_long(argv[++i], "--max-hangs");
+      else if (!strcmp(a, "--max-print"))
+         opt_max_print = parse_long(argv[++i], "--max-print");
+      else if (!strcmp(a, "--only"))
+         opt_only = parse_long(argv[++i], "--only");
+      else
+         usage();
+   }
+   if (!(opt_timeout > 0)) usage();
+   shm = mmap(NULL, sizeof *shm, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+   if (shm == MAP_FAILED) {
+      perror("fuzz: mmap");
+      return 2;
+   }
+   memset(shm, 0, sizeof *shm);
+   setvbuf(stdout, NULL, _IOLBF, 0);
+   printf("fuzz: %ld calls, seed %llu, time limit %g s per call\n",
+          opt_only >= 0 ? 1L : opt_calls, opt_seed, opt_timeout);
+   if (opt_list) {
+      for (start = 0; start < opt_calls; start++) run_one(start);
+      return 0;
+   }
+
+   start = opt_only >= 0 ? opt_only : 0;
+   {
+      long end = opt_only >= 0 ? opt_only + 1 : opt_calls;
+      while (start < end) {
+         pid_t pid;
+         int wst;
+         shm->current = -1;
+         shm->next = start;
+         fflush(stdout);
+         pid = fork();
+         if (pid < 0) {
+            perror("fuzz: fork");
+            return 2;
+         }
+         if (pid == 0) {
+            in_child = 1;
+            run_range(start, end);
+            fflush(stdout);
+            exit(0); /* exit, not _exit: LeakSanitizer checks the child here */
+         }
+         for (;;) {
+            pid_t w = waitpid(pid, &wst, WNOHANG);
+            long cur1, cur2;
+            double t;
+            if (w == pid) break;
+            if (w < 0 && errno != EINTR) {
+               perror("fuzz: waitpid");
+               return 2;
+            }
+            cur1 = shm->current;
+            t = shm->started;
+            cur2 = shm->current;
+            if (cur1 >= 0 && cur1 == cur2 && now() - t > opt_timeout) {
+               char what[80];
+               kill(pid, SIGKILL);
+               waitpid(pid, &wst, 0);
+               sprintf(what, "no return within %g s (killed)", opt_timeout);
+               report_process_failure(cur1, K_HANG, what);
+               hangs++;
+               start = cur1 + 1;
+               goto next_child;
+            }
+            usleep(2000);
+         }
+         if (WIFEXITED(wst) && WEXITSTATUS(wst) == 0 && shm->next >= end) {
+            start = end;
+            break;
+         }
+         {
+            char what[80];
+            long cur = shm->current;
+            if (WIFSIGNALED(wst))
+               sprintf(what, "killed by signal %d (%s)", WTERMSIG(wst), strsignal(WTERMSIG(wst)));
+            else
+               sprintf(what, "exit status %d", WEXITSTATUS(wst));
+            report_process_failure(cur, cur >= 0 ? K_CRASH : K_CHILD_EXIT, what);
+            if (cur < 0) cur = shm->next; /* died between calls or at exit */
+            else cur = cur + 1;
+            if (cur <= start && shm->next <= start) break; /* no progress: give up */
+            start = cur;
+            if (start >= end) break;
+         }
+      next_child:
+         if (opt_max_hangs > 0 && hangs >= opt_max_hangs) {
+            printf("fuzz: stopped after %ld hangs at call %ld (--max-hangs)\n", hangs, start);
+            break;
+         }
+      }
+      done_calls = (opt_only >= 0 ? 1 : start < end ? start : end);
+   }
+
+   /* summary */
+   lib_total = shm->lib_calls;
+   printf("\nfuzz summary: seed %llu, %ld calls (%ld library calls with repeats and cross "
+          "checks), %ld hangs, %.1f s\n",
+          opt_seed, done_calls, lib_total, shm->viol[K_HANG], now() - t_start);
+   printf("  %-28s %9s %10s %10s   statuses 0 1 2 3 4 5 other\n", "function", "calls",
+          "mean ms", "max ms");
+   for (fn = 0; fn < N_FN; fn++) {
+      long n = shm->calls[fn];
+      if (n == 0) continue;
+      printf("  %-24s%-4s %9ld %10.3f %10.1f   ", family_name[fn / 2], fn % 2 ? "_msg" : "",
+             n, 1e3 * shm->seconds[fn] / n, 1e3 * shm->max_seconds[fn]);
+      for (k = 0; k < 7; k++) printf(" %ld", shm->status_count[fn][k]);
+      printf("\n");
+   }
+   printf("  violations by kind:\n");
+   for (k = 0; k < N_KIND; k++) {
+      if (shm->viol[k] == 0) continue;
+      printf("  %8ld %-28s %s (%s)\n", shm->viol[k], kind_name[k],
+             kind_severe[k] ? "SEVERE" : "mild", kind_help[k]);
+      for (fn = 0; fn < N_FN; fn++)
+         if (shm->viol_fn[k][fn])
+            printf("  %8s   %ld in %s%s\n", "", shm->viol_fn[k][fn], family_name[fn / 2],
+                   fn % 2 ? "_msg" : "");
+      if (kind_severe[k]) severe += 1;
+   }
+   if (shm->viol[K_FAILED_VALID]) {
+      static const char *mname[4] = {"westergaard", "jkr", "dw", "md"};
+      int m, f;
+      printf("  failure-in-domain by model and function (statuses 2 3 5):\n");
+      for (m = 0; m < 4; m++)
+         for (f = 0; f < N_FAMILY; f++) {
+            long *v = shm->failed_valid[m][f];
+            if (v[2] + v[3] + v[5])
+               printf("  %12s %-20s %6ld %6ld %6ld\n", mname[m], family_name[f], v[2], v[3],
+                      v[5]);
+         }
+   }
+   if (severe == 0) printf("  no severe violation\n");
+   printf("fuzz: %s\n", severe ? "FAILED (severe violations)" : "passed");
+   return severe ? 1 : 0;
+}

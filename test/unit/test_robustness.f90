@@ -1,0 +1,159 @@
+!> Regression tests for the robustness issue (9): every reproducer found by the contract
+!> fuzzer gives a correct result or a documented status, and nothing hangs.
+module test_robustness
+   use wavyadhesion
+   use wa_kinds, only: pi
+   use harness, only: error_type, unittest_type, new_unittest, check, check_close
+   implicit none
+   private
+
+   public :: collect_robustness
+
+contains
+
+   subroutine collect_robustness(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest("parameter_domain", test_domain), &
+         new_unittest("md_huge_mu_is_jkr_or_refused", test_md_huge_mu), &
+         new_unittest("dw_a_star_zero_limit", test_dw_a_zero), &
+         new_unittest("dw_mu_zero_is_westergaard", test_dw_mu_zero), &
+         new_unittest("md_mechanism_change_windows", test_md_windows), &
+         new_unittest("dw_roots_tiny_alpha", test_dw_roots_tiny_alpha), &
+         new_unittest("dw_trace_large_mu", test_dw_trace_large_mu)]
+   end subroutine collect_robustness
+
+   type(params_type) function params_of(alpha, mu) result(params)
+      real(wp), intent(in) :: alpha, mu
+      integer :: status
+      call new_params(alpha, mu, params, status)
+   end function params_of
+
+   !> Outside alpha in [1e-12, 1e12], mu = 0 or [1e-100, 1e100]: wa_invalid_argument
+   !> (formerly NaN or -Inf with wa_ok at alpha = 1e300, 1e155, c* > 1/2 at mu = 1e-310).
+   subroutine test_domain(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: p
+      real(wp), parameter :: alphas(3) = [1.0e300_wp, 1.0e155_wp, 1.0e13_wp]
+      real(wp), parameter :: mus(3) = [1.0e-310_wp, 1.0e-101_wp, 1.0e200_wp]
+      integer :: i, status
+      do i = 1, size(alphas)
+         call new_params(alphas(i), 1.0_wp, p, status)
+         call check(error, status == wa_invalid_argument, "huge alpha refused")
+         call new_params(0.3_wp, mus(i), p, status)
+         call check(error, status == wa_invalid_argument, "mu outside the domain refused")
+      end do
+   end subroutine test_domain
+
+   !> MD at mu = 1e100 (the largest accepted) equals JKR to 1e-13 (the Dugdale zone is
+   !> ~1e-100 wide); mu = 1e200 (which hung in the root scan) is refused.
+   subroutine test_md_huge_mu(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: alphas(3) = [1.0e-8_wp, 0.3_wp, 10.0_wp]
+      type(state_type) :: s
+      integer :: i, status
+      do i = 1, size(alphas)
+         call md_equilibrium(params_of(alphas(i), 1.0e100_wp), 0.3_wp, s, status)
+         call check(error, status == wa_ok, "md at mu = 1e100")
+         call check_close(error, s%p_star, jkr_load(alphas(i), 0.3_wp), 1.0e-13_wp, &
+            1.0e-13_wp, what="md P* = JKR at mu = 1e100")
+      end do
+   end subroutine test_md_huge_mu
+
+   !> a* = 0 and a* < 1e-150 give the a* -> 0 limit of the case-1 state (formerly c* = 1/2
+   !> with a wrong load, and 47 roots): mpmath root of (2.25b) with A = 0,
+   !> 8 I*(0,C) = (1+C^2) C - (1-C^2)^2 artanh C, at alpha = 0.3, mu = 1.
+   subroutine test_dw_a_zero(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: c_ref = 0.1304603380892495430681232_wp
+      real(wp), parameter :: p_ref = -0.08835236292906315510364877_wp
+      real(wp), parameter :: as(3) = [0.0_wp, 1.0e-200_wp, 1.0e-160_wp]
+      type(state_type) :: s, states(8)
+      integer :: i, n, status
+      do i = 1, size(as)
+         call dw_equilibrium(params_of(0.3_wp, 1.0_wp), as(i), s, status)
+         call check(error, status == wa_ok .and. s%zone_case == zone_inside, "dw a* -> 0")
+         call check_close(error, s%c_star, c_ref, 1.0e-14_wp, what="c* at a* -> 0")
+         call check_close(error, s%p_star, p_ref, 1.0e-14_wp, what="P* at a* -> 0")
+         call dw_roots(params_of(0.3_wp, 1.0_wp), as(i), states, n, status)
+         call check(error, status == wa_ok .and. n == 1, "one DW state at a* -> 0")
+      end do
+   end subroutine test_dw_a_zero
+
+   !> mu = 0 is the Westergaard limit for DW too: the branch, the load path and the critical
+   !> forces equal Westergaard's (formerly "step size underflow on the case-1 curve").
+   subroutine test_dw_mu_zero(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      real(wp) :: fc, pf, fc_w, pf_w
+      integer :: status
+      call trace_branch(model_dw, params_of(0.3_wp, 0.0_wp), b, status)
+      call check(error, status == wa_ok .and. b%n > 2, "dw branch at mu = 0")
+      if (allocated(error)) return
+      call check(error, all(abs(b%p_star(1:b%n) - sin(pi*b%a_star(1:b%n))**2) <= 1.0e-15_wp), &
+         "dw branch at mu = 0 is P* = sin^2(pi a*)")
+      call critical_forces(model_dw, params_of(0.3_wp, 0.0_wp), fc, pf, status)
+      call critical_forces(model_westergaard, params_of(0.3_wp, 0.0_wp), fc_w, pf_w, status)
+      call check(error, status == wa_ok .and. fc == fc_w .and. pf == pf_w, &
+         "dw critical forces at mu = 0 are Westergaard's")
+   end subroutine test_dw_mu_zero
+
+   !> Where the MD pull-off mechanism changes, a case-1 root at c* = 1/2 - 1e-7 and the
+   !> case-2 state coexist at a* -> 0; the tracer took one for the other and found "no piece
+   !> of the curve reaches a* = 1/2". Each window now gives finite forces that join their
+   !> neighbours at +-1e-6 relative in mu.
+   subroutine test_md_windows(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: alphas(4) = [1.0_wp, 1.0_wp, 0.3_wp, 3.0_wp]
+      real(wp), parameter :: mus(4) = [0.79369860901363931_wp, 0.7936921_wp, &
+         0.15939872014691756_wp, 3.4338367324868928_wp]
+      real(wp) :: fc, pf, fc2, pf2
+      integer :: i, status
+      do i = 1, size(mus)
+         call critical_forces(model_md, params_of(alphas(i), mus(i)), fc, pf, status)
+         call check(error, status == wa_ok, "md critical forces in a mechanism-change window")
+         call check(error, ieee_finite(fc) .and. ieee_finite(pf), "finite forces")
+         call critical_forces(model_md, params_of(alphas(i), mus(i)*(1.0_wp + 1.0e-6_wp)), &
+            fc2, pf2, status)
+         call check(error, status == wa_ok .and. abs(fc2 - fc) < 1.0e-3_wp, "P_fc continuous")
+      end do
+   end subroutine test_md_windows
+
+   !> dw_roots found no root where dw_equilibrium finds one (alpha ~ 2e-8: the scan began
+   !> above the root, beyond the large-mu estimate's reach).
+   subroutine test_dw_roots_tiny_alpha(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: p
+      type(state_type) :: s, states(8)
+      integer :: n, status
+      p = params_of(2.1969480238680286e-08_wp, 0.015303748132451851_wp)
+      call dw_equilibrium(p, 0.14607854996624908_wp, s, status)
+      call dw_roots(p, 0.14607854996624908_wp, states, n, status)
+      call check(error, status == wa_ok .and. n == 1, "dw_roots finds the root")
+      if (allocated(error)) return
+      call check(error, states(1)%c_star == s%c_star .and. states(1)%p_star == s%p_star, &
+         "dw_roots agrees with dw_equilibrium")
+   end subroutine test_dw_roots_tiny_alpha
+
+   !> DW traces up to mu = 1e6 (the zone reaches c* = 1/2 within 1e-12 of a* = 1/2) end in
+   !> full contact with the pull-off at the case-2 corner, 1 - Sigma0/2; where the switch is
+   !> beyond double precision (mu = 1e9) the tracer refuses with wa_numerical_error.
+   subroutine test_dw_trace_large_mu(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: p
+      real(wp) :: fc, pf
+      integer :: status
+      p = params_of(0.3_wp, 1.0e6_wp)
+      call critical_forces(model_dw, p, fc, pf, status)
+      call check(error, status == wa_ok, "dw critical forces at mu = 1e6")
+      call check_close(error, pf, 1.0_wp - 0.5_wp*p%sigma0, 1.0e-14_wp, what="P_pf = 1 - Sigma0/2")
+      call critical_forces(model_dw, params_of(0.3_wp, 1.0e9_wp), fc, pf, status)
+      call check(error, status == wa_numerical_error, "dw at mu = 1e9: clean refusal")
+   end subroutine test_dw_trace_large_mu
+
+   elemental logical function ieee_finite(x)
+      real(wp), intent(in) :: x
+      ieee_finite = abs(x) <= huge(x)
+   end function ieee_finite
+
+end module test_robustness

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds the Fortran API reference with FORD (PyPI `ford`, installed into .venv by
+# tools/setup.sh) from the `!>` comments in src/, into doc/api/ (open doc/api/index.html).
+# Project file: doc/ford.md. Fails when FORD prints any warning or error.
+# Usage: bash tools/ford.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x .venv/bin/ford ] && export PATH="$PWD/.venv/bin:$PATH"
+# tools/ford_markdown.py: asterisks in a*, P* are names, not emphasis.
+export PYTHONPATH="$PWD/tools${PYTHONPATH:+:$PYTHONPATH}"
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+status=0
+(cd doc && ford ford.md) > "$log" 2>&1 || status=$?
+if [ "$status" -ne 0 ] || grep -qiE "warning|error" "$log"; then
+   cat "$log" >&2
+   echo "tools/ford.sh: FORD failed or warned (exit status $status)" >&2
+   exit 1
+fi
+echo "FORD API reference: doc/api/index.html ($(find doc/api -name '*.html' | wc -l) pages)"

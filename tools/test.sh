@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Runs every test (after `bash tools/setup.sh`), with the project's virtual environment
+# .venv first on PATH:
+#   1. fpm test --profile release: the Fortran unit tests (unit) and the C-interface
+#      test (capi);
+#   2. installs the Python package ./python into .venv;
+#   3. pytest over the command line (test/cli), the Python package (python/tests), the
+#      docs (test/docs: commands and numbers quoted in README.md and doc/*.md, the FORD
+#      API reference, the version everywhere) and the installed library used from
+#      Make, CMake, C and fpm (test/consumers).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x .venv/bin/python ] || { echo "tools/test.sh: run 'bash tools/setup.sh' first" >&2; exit 1; }
+export PATH="$PWD/.venv/bin:$PATH"
+
+fpm test --profile release
+python -m pip install --quiet --disable-pip-version-check ./python
+# pytest exits 5 when it collected no tests; set -e makes that (like any failure) fatal.
+python -m pytest -q test/cli python/tests test/docs test/consumers
