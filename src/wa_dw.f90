@@ -320,7 +320,7 @@ contains
       ! sin(pi(c*-a*)) = (C^2-A^2)/(C cos(pi a*) + A cos(pi c*)): no cancellation
       state%gap_width = atan2(d2/(c*geo%cos_a + geo%a*cos_c), cos_c*geo%cos_a + c*geo%a)/pi
       state%a_star = geo%a_star
-      state%c_star = geo%a_star + state%gap_width
+      state%c_star = min(nearest(0.5_wp, -1.0_wp), geo%a_star + state%gap_width)  ! c* < 1/2
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
       state%zone_case = zone_inside
    end function case1_state

@@ -875,7 +875,9 @@ contains
       type(state_type) :: state
       state%a_star = geo%a_star
       state%gap_width = gap_of_x(geo, x)
-      state%c_star = min(0.5_wp, geo%a_star + state%gap_width)
+      ! case 1 has c* < 1/2 even where c* rounds to 1/2 (1/2 - c* below 2^-54; c* - a*
+      ! keeps its full accuracy in gap_width)
+      state%c_star = min(nearest(0.5_wp, -1.0_wp), geo%a_star + state%gap_width)
       state%p_star = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)   ! (2.27a)
       state%zone_case = zone_inside
    end function case1_state

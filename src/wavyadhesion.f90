@@ -6,7 +6,7 @@ module wavyadhesion
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    use wa_params, only: params_type, scales_type, new_params, dimensional_params, &
-      reduced_modulus
+      reduced_modulus, alpha_min, alpha_max, mu_min, mu_max
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
    use wa_kernels, only: westergaard_load, jkr_load, westergaard_pressure, &
@@ -16,7 +16,7 @@ module wavyadhesion
    use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
       event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
-      event_full_contact_left, event_pull_off, event_branch_end
+      event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
@@ -27,6 +27,7 @@ module wavyadhesion
    public :: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    public :: params_type, scales_type, new_params, dimensional_params, reduced_modulus
+   public :: alpha_min, alpha_max, mu_min, mu_max
    public :: state_type, zone_inside, zone_whole_period, zone_full_contact
    public :: model_westergaard, model_jkr, model_dw, model_md
    public :: westergaard_load, jkr_load, westergaard_pressure, westergaard_displacement, &
@@ -36,7 +37,7 @@ module wavyadhesion
    public :: check_model, model_equilibrium, model_roots
    public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
-      event_pull_off, event_branch_end
+      event_pull_off, event_branch_end, event_a_turn
    public :: path_type, load_path, critical_forces, critical_sweep, mechanism_change, &
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap

@@ -361,7 +361,7 @@ static void test_branch_every_model(void) {
          ok = ok && b.a[i] > 0 && b.a[i] <= 0.5 && b.c[i] >= b.a[i] && b.c[i] <= 0.5 &&
               isfinite(b.p[i]) && b.z[i] >= 1 && b.z[i] <= 3 &&
               (b.s[i] == 0 || b.s[i] == 1) && b.e[i] >= WA_EVENT_NONE &&
-              b.e[i] <= WA_EVENT_BRANCH_END && (b.e[i] != WA_EVENT_FOLD || b.s[i] == 0);
+              b.e[i] <= WA_EVENT_A_TURN && (b.e[i] != WA_EVENT_FOLD || b.s[i] == 0);
       CHECK(ok, "model %d: every point well formed", models[m]);
       if (models[m] == WA_MODEL_JKR)
          CHECK(count_events(&b, WA_EVENT_FOLD) == 2, "jkr alpha 0.3: two folds (got %d)",

@@ -3,6 +3,8 @@
 module test_branch
    use wavyadhesion
    use wa_kinds, only: pi
+   use wa_md, only: md_load, md_opening
+   use wa_dw, only: dw_residual
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
@@ -26,7 +28,9 @@ contains
          new_unittest("md_branch_points_are_equilibria", test_md_points), &
          new_unittest("md_branch_folds_back_and_switches", test_md_shape), &
          new_unittest("md_case2_piece_reached", test_md_pieces), &
-         new_unittest("invalid_model", test_invalid)]
+         new_unittest("invalid_model", test_invalid), &
+         new_unittest("stability_matches_jacobian", test_stability), &
+         new_unittest("md_returning_piece_unstable", test_md_returning_unstable)]
    end subroutine collect_branch
 
    type(params_type) function params_of(alpha, mu) result(params)
@@ -303,5 +307,110 @@ contains
          call check(error, status == wa_invalid_argument, "load_path: bad alpha accepted")
       end block
    end subroutine test_invalid
+
+   !> The stability flag against an independent criterion (doc/theory.md, "Stability under
+   !> load control"): on case 1 a state is stable iff D = dP/da* dG/dc* - dP/dc* dG/da* > 0,
+   !> G the equilibrium equation in (a*, c*) (MD: the opening (2.27b) - Dcod with P* from
+   !> (2.27a); DW: ln of (2.25b)), by central differences of the point formulas, not the
+   !> tracer's partials; on case 2 iff dP*/da* > 0. Points where D is below 1e-6 of its
+   !> terms (at and next to folds) and extrema are skipped.
+   subroutine test_stability(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: alphas(4) = [0.1_wp, 0.3_wp, 1.0_wp, 3.0_wp]
+      real(wp), parameter :: mus(4) = [0.3_wp, 1.0_wp, 5.0_wp, 30.0_wp]
+      integer, parameter :: models(2) = [model_dw, model_md]
+      type(params_type) :: p
+      type(branch_type) :: b
+      integer :: i, j, k, m, status, checked
+      real(wp) :: d, scale
+      character(len=160) :: text
+      checked = 0
+      do m = 1, 2
+         do i = 1, size(alphas)
+            do j = 1, size(mus)
+               p = params_of(alphas(i), mus(j))
+               call trace_branch(models(m), p, b, status)
+               call check(error, status == wa_ok, "trace")
+               if (allocated(error)) return
+               do k = 1, b%n
+                  if (b%extremum(k) == 1 .or. b%extremum(k) == -1) cycle
+                  if (b%zone_case(k) == zone_whole_period) then
+                     call check(error, b%stable(k), "case 2 (dP*/da* > 0) flagged unstable")
+                     cycle
+                  end if
+                  if (b%zone_case(k) /= zone_inside) cycle
+                  if (b%c_star(k) >= 0.5_wp - 1.0e-9_wp .or. b%a_star(k) < 1.0e-4_wp) cycle
+                  call jacobian(models(m), p, b%a_star(k), b%c_star(k), d, scale)
+                  if (abs(d) < 1.0e-6_wp*scale) cycle
+                  checked = checked + 1
+                  write (text, '(a,i0,a,2es10.2,a,2es12.4,a,l1)') "model ", models(m), &
+                     " alpha, mu", alphas(i), mus(j), ": a*, D", b%a_star(k), d, " stable ", &
+                     b%stable(k)
+                  call check(error, (d > 0.0_wp) .eqv. b%stable(k), trim(text))
+                  if (allocated(error)) return
+               end do
+            end do
+         end do
+      end do
+      call check(error, checked > 5000, "too few points checked")
+   end subroutine test_stability
+
+   !> D = P_a G_c - P_c G_a at (a*, c*) by central differences, and |P_a G_c| + |P_c G_a|.
+   subroutine jacobian(model, p, a, c, d, scale)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: p
+      real(wp), intent(in) :: a, c
+      real(wp), intent(out) :: d, scale
+      real(wp) :: h, pa, pc, ga, gc
+      h = 1.0e-6_wp*min(a, c - a, 0.5_wp - c)
+      pa = (load(a + h, c) - load(a - h, c))/(2.0_wp*h)
+      pc = (load(a, c + h) - load(a, c - h))/(2.0_wp*h)
+      ga = (eqn(a + h, c) - eqn(a - h, c))/(2.0_wp*h)
+      gc = (eqn(a, c + h) - eqn(a, c - h))/(2.0_wp*h)
+      d = pa*gc - pc*ga
+      scale = abs(pa*gc) + abs(pc*ga)
+   contains
+      real(wp) function load(x, y)
+         real(wp), intent(in) :: x, y
+         if (model == model_md) then
+            load = md_load(p, x, y - x)
+         else
+            load = sin(pi*x)**2 - 0.5_wp*p%sigma0*sqrt(sin(pi*(y - x))*sin(pi*(y + x))) &
+               /cos(pi*x)
+         end if
+      end function load
+      real(wp) function eqn(x, y)
+         real(wp), intent(in) :: x, y
+         if (model == model_md) then
+            eqn = md_opening(p, x, y - x) - p%dcod
+         else
+            eqn = dw_residual(p, x, log((sin(pi*y) - sin(pi*x))/(1.0_wp - sin(pi*x))))
+         end if
+      end function eqn
+   end subroutine jacobian
+
+   !> alpha = 0.3, mu = 1 (doc/figures/branch_md_alpha0.3_mu1.png): past the load maximum
+   !> the MD curve turns back in a* (event 9, not a fold) and returns to the switch to
+   !> c* = 1/2; that whole returning piece is unstable, and the a*-turn leaves the flag as is.
+   subroutine test_md_returning_unstable(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      integer :: status, i_max, i_turn, i_switch, i
+      call trace_branch(model_md, params_of(0.3_wp, 1.0_wp), b, status)
+      call check(error, status == wa_ok, "trace")
+      if (allocated(error)) return
+      i_max = findloc(b%extremum(1:b%n), 1, dim=1)
+      i_turn = findloc(b%event(1:b%n), event_a_turn, dim=1)
+      i_switch = findloc(b%event(1:b%n), event_switch, dim=1)
+      call check(error, 0 < i_max .and. i_max < i_turn .and. i_turn < i_switch, &
+         "maximum, then a*-turn, then switch")
+      if (allocated(error)) return
+      call check(error, b%extremum(i_turn) == 2 .and. .not. b%stable(i_turn), "a*-turn unstable")
+      call check(error, .not. any(b%stable(i_max:i_switch)), "returning piece unstable")
+      call check(error, all(b%stable(i_switch + 1:b%n)), "case 2 after the corner stable")
+      do i = 2, i_max - 1
+         if (b%a_star(i) > 0.05_wp) call check(error, b%stable(i), "rising piece stable")
+      end do
+   end subroutine test_md_returning_unstable
 
 end module test_branch
