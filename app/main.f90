@@ -399,8 +399,8 @@ contains
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &
-         "  --alpha A          Johnson's parameter, > 0 (default 0.3)", &
-         "  --mu U             transition parameter, >= 0 (default 1)", &
+         "  --alpha A          Johnson's parameter, in [1e-12, 1e12] (default 0.3)", &
+         "  --mu U             transition parameter, 0 or in [1e-100, 1e100] (default 1)", &
          "  --mu-range LO:HI:N[:log]", &
          "                     N values of mu from LO to HI (critical only; not with --mu)", &
          "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &

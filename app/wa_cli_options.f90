@@ -358,8 +358,8 @@ contains
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: range
       select case (name)
-      case ("--alpha"); range = "(0, inf)"
-      case ("--mu"); range = "[0, inf)"
+      case ("--alpha"); range = "[1e-12, 1e12]"         ! as wa_params states them
+      case ("--mu"); range = "0 or [1e-100, 1e100]"
       case ("--a-star"); range = "[0, 1/2]"
       case ("--E1", "--E2", "--Estar"); range = "(0, inf) Pa"
       case ("--nu1", "--nu2"); range = "(-1, 1/2]"

@@ -249,3 +249,31 @@ def test_messages_keep_the_exponent_letter(mu, text):
     with pytest.raises(wa.InvalidArgumentError) as info:
         wa.equilibrium("dw", 0.3, mu, 0.2)
     assert f"mu = {text} is outside" in str(info.value)
+
+
+def test_domain_bounds_equal_the_header(repo):
+    """critical_forces finds the first bad point with these bounds (the library decides)."""
+    import re
+    header = (repo / "include" / "wavyadhesion.h").read_text()
+    c = dict(re.findall(r"#define\s+(WA_(?:ALPHA|MU)_M(?:IN|AX))\s+(\S+)", header))
+    assert (_core._ALPHA_MIN, _core._ALPHA_MAX, _core._MU_MIN, _core._MU_MAX) == tuple(
+        float(c[k]) for k in ("WA_ALPHA_MIN", "WA_ALPHA_MAX", "WA_MU_MIN", "WA_MU_MAX"))
+
+
+@pytest.mark.parametrize("alpha, mu, name, index", [
+    ([0.3, 2e12], 1.0, "alpha", "(1,)"), (0.3, [1.0, 1e-200], "mu", "(1,)"),
+    ([0.3, 0.6], [[1.0, 1.0], [1e101, 1.0]], "mu", "(1, 0)"),
+])
+def test_sweep_domain_checked_before_any_work(monkeypatch, alpha, mu, name, index):
+    calls = []
+    real = _core._f.fa_critical_sweep
+
+    def spy(code, a, m):
+        calls.append(len(m))
+        return real(code, a, m)
+
+    monkeypatch.setattr(_core._f, "fa_critical_sweep", spy)
+    monkeypatch.setattr(_core, "_CHUNK_SWEEP", 1)
+    with pytest.raises(wa.InvalidArgumentError, match=rf"{name} .*index \{index[:-1]}\)"):
+        wa.critical_forces("dw", alpha, mu)
+    assert calls == [1]                  # only the call that words the message

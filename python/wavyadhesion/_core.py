@@ -61,6 +61,11 @@ _BRANCH_CAPACITY = 4096
 # Events asked for in a first load_path() call (path_type holds at most 64).
 _PATH_CAPACITY = 64
 
+# The supported domain (WA_ALPHA_MIN ... WA_MU_MAX in include/wavyadhesion.h; a test
+# checks they agree). Used only to find the first bad point before any work: the
+# library's own check decides and words the message.
+_ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = 1e-12, 1e12, 1e-100, 1e100
+
 # Points per facade call in the vectorised functions. Between two calls Python runs and
 # raises KeyboardInterrupt on Ctrl-C (a Fortran call cannot be interrupted), so a chunk
 # should take well under a second: equilibrium ~2 us/point (DW) to ~50 us/point (MD near
@@ -886,8 +891,10 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
 
 def _check_sweep_arguments(code, alpha_f, mu_f, shape):
     """InvalidArgumentError naming the first bad alpha or mu, before any work."""
-    for name, values in (("alpha", alpha_f), ("mu", mu_f)):
-        bad = ~np.isfinite(values) | (values <= 0 if name == "alpha" else values < 0)
+    with np.errstate(invalid="ignore"):
+        bad_alpha = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX))
+        bad_mu = ~((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX)))
+    for bad in (bad_alpha, bad_mu):
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             *_, status, message = _f.fa_critical_sweep(code, float(alpha_f[i]),

@@ -240,7 +240,7 @@ def test_strict_number_parsing(cli, option, value, subcommand):
 
 
 @pytest.mark.parametrize("option, range_text", [
-    ("--alpha", "(0, inf)"), ("--mu", "[0, inf)"), ("--a-star", "[0, 1/2]"),
+    ("--alpha", "[1e-12, 1e12]"), ("--mu", "0 or [1e-100, 1e100]"), ("--a-star", "[0, 1/2]"),
     ("--nu1", "(-1, 1/2]"), ("--period", "(0, inf) m"),
 ])
 def test_parse_error_names_the_valid_range(cli, option, range_text):
