@@ -849,7 +849,8 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
     Raises
     ------
     InvalidArgumentError
-        Unknown model; (errors="raise") alpha <= 0, mu < 0, NaN or infinite values (the
+        Unknown model; (errors="raise") alpha outside [1e-12, 1e12], mu outside 0 or
+        [1e-100, 1e100], NaN or infinite values (the
         message gives the index of the first bad point).
     InvalidTypeError
         alpha or mu is None, complex, a string or a masked array with masked values.
