@@ -1,51 +1,60 @@
 !> `wavyadhesion`: the command-line driver (SPEC section 7). Prints tables of equilibria;
-!> usage errors exit with status 2, numerical failures with status 1.
+!> usage errors exit with status 2, numerical failures with status 1. The table goes
+!> through wa_cli_output: write errors are detected and `--output FILE` is replaced only
+!> when the whole table was written.
 program wavyadhesion_cli
-   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use, intrinsic :: iso_fortran_env, only: error_unit
    use wavyadhesion
-   use wa_cli_options, only: cli_options, parse_command_line, model_name
+   use wa_cli_options, only: cli_options, parse_command_line, model_name, given, si_given
    use wa_cli_table, only: write_header, write_row, format_real
+   use wa_cli_output, only: sink_type, open_sink, put_line, close_sink, discard_sink
    implicit none
 
    type(cli_options) :: opts
    character(len=:), allocatable :: error
    type(params_type) :: params
-   integer :: unit, ios
+   !> Where the table goes; usage_error and numerical_error discard it
+   type(sink_type) :: out
+   logical :: ok, rows_failed
 
    call parse_command_line(opts, error)
    if (allocated(error)) call usage_error(error)
-   if (opts%help) then
-      call print_help()
+   if (opts%help .or. opts%version) then
+      call open_sink(out, "", ok)
+      if (ok .and. opts%help) call print_help()
+      if (ok .and. .not. opts%help) call put_line(out, "wavyadhesion "//wa_version)
+      if (ok) call close_sink(out, ok)
+      if (.not. ok) stop 1, quiet=.true.
       stop
    end if
-   if (opts%version) then
-      write (output_unit, '(a)') "wavyadhesion "//wa_version
-      stop
-   end if
-   if (opts%command /= "critical") call resolve_params(opts, params)
-   unit = output_unit
-   if (len(opts%output) > 0) then
-      open (newunit=unit, file=opts%output, status="replace", action="write", iostat=ios)
-      if (ios /= 0) call usage_error("--output: cannot open '"//opts%output//"' for writing")
+   if (opts%command /= "critical" .or. si_given(opts)) call resolve_params(opts, params)
+   call open_sink(out, opts%output, ok)
+   if (.not. ok) then
+      write (error_unit, '(a)') "Try 'wavyadhesion --help'."
+      stop 2, quiet=.true.
    end if
 
+   rows_failed = .false.
    select case (opts%command)
    case ("point")
-      call run_point(opts, params, unit)
+      call run_point(opts, params)
    case ("branch")
-      call run_branch(opts, params, unit)
+      call run_branch(opts, params)
    case ("path")
-      call run_path(opts, params, unit)
+      call run_path(opts, params)
    case ("critical")
-      call run_critical(opts, unit)
+      call run_critical(opts, params, rows_failed)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
+   call close_sink(out, ok)
+   if (.not. ok) stop 1, quiet=.true.
+   if (rows_failed) stop 1, quiet=.true.
 
 contains
 
-   !> alpha, mu from --alpha/--mu (defaults 0.3, 1) or from the SI options.
+   !> alpha, mu from --alpha/--mu (defaults 0.3, 1) or from the SI options (the parser
+   !> has checked that the SI set is complete and not mixed with --alpha/--mu).
    subroutine resolve_params(opts, params)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(out) :: params
@@ -55,11 +64,11 @@ contains
       integer :: status
 
       msg = ""
-      if (.not. ieee_is_nan(opts%period)) then
+      if (si_given(opts)) then
          estar = opts%estar
-         if (ieee_is_nan(estar)) then
+         if (.not. given(opts, "--Estar")) then
             call reduced_modulus(opts%e1, opts%nu1, opts%e2, opts%nu2, estar, status, msg)
-            if (status /= wa_ok) call usage_error("--E1/--nu1/--E2/--nu2 (or --Estar): "//trim(msg))
+            if (status /= wa_ok) call usage_error("--E1/--nu1/--E2/--nu2: "//trim(msg))
          end if
          call dimensional_params(estar, opts%period, opts%amplitude, opts%work, opts%peak, &
             params, scales, status, msg)
@@ -81,13 +90,13 @@ contains
       single = values(1)
    end function single
 
-   !> point: every equilibrium at each a* (SPEC section 7).
-   subroutine run_point(opts, params, unit)
+   !> point: every equilibrium at each a* (SPEC section 7). Linear in the number of a*:
+   !> the rows are kept in an array that doubles when full.
+   subroutine run_point(opts, params)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
-      integer, intent(in) :: unit
-      type(state_type), allocatable :: rows(:)
-      integer :: i
+      type(state_type), allocatable :: rows(:), grown(:), states(:)
+      integer :: i, n_rows, n
 
       if (.not. allocated(opts%a_star)) call usage_error("point needs --a-star X[,X...]")
       do i = 1, size(opts%a_star)
@@ -95,64 +104,78 @@ contains
             call usage_error("--a-star: "//format_real(opts%a_star(i))// &
             " is outside its valid range [0, 1/2]")
       end do
-      allocate (rows(0))
+      allocate (rows(max(16, 2*size(opts%a_star))))
+      n_rows = 0
       do i = 1, size(opts%a_star)
-         rows = [rows, states_at(opts%model, params, opts%a_star(i))]
+         call states_at(opts%model, params, opts%a_star(i), states)
+         n = size(states)
+         if (n_rows + n > size(rows)) then
+            allocate (grown(2*size(rows) + n))
+            grown(1:n_rows) = rows(1:n_rows)
+            call move_alloc(grown, rows)
+         end if
+         rows(n_rows + 1:n_rows + n) = states
+         n_rows = n_rows + n
       end do
-      call write_header(unit, opts%format, "equilibria at given a*", model_name(opts%model), &
+      call write_header(out, opts%format, "equilibria at given a*", model_name(opts%model), &
          params, "a_star c_star P_star zone_case", &
          [character(len=60) :: "zone_case: 1 a*<c*<1/2, 2 c*=1/2, 3 full contact"])
-      do i = 1, size(rows)
-         call write_row(unit, opts%format, [rows(i)%a_star, rows(i)%c_star, rows(i)%p_star], &
+      do i = 1, n_rows
+         call write_row(out, opts%format, [rows(i)%a_star, rows(i)%c_star, rows(i)%p_star], &
             [rows(i)%zone_case])
       end do
    end subroutine run_point
 
    !> All states of a model at one a* (Westergaard and JKR: one, with c* = a*).
-   function states_at(model, params, a_star) result(states)
+   subroutine states_at(model, params, a_star, states)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star
-      type(state_type), allocatable :: states(:)
+      type(state_type), allocatable, intent(inout) :: states(:)
       type(state_type) :: buffer(8)
+      type(state_type), allocatable :: big(:)
       character(len=256) :: msg
       integer :: n, status
 
       msg = ""
       call model_roots(model, params, a_star, buffer, n, status, msg)
-      if (status /= wa_ok) call numerical_error(status, msg)
-      states = buffer(1:n)
-   end function states_at
+      if (status == wa_capacity_too_small .and. n > size(buffer)) then
+         allocate (big(n))
+         call model_roots(model, params, a_star, big, n, status, msg)
+         if (status == wa_ok) states = big(1:n)
+      else if (status == wa_ok) then
+         states = buffer(1:n)
+      end if
+      if (status /= wa_ok) call numerical_error(status, "a_star = "//format_real(a_star)// &
+         ": "//trim(msg))
+   end subroutine states_at
 
    !> branch: the equilibrium curve by continuation, with its events.
-   subroutine run_branch(opts, params, unit)
+   subroutine run_branch(opts, params)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
-      integer, intent(in) :: unit
       type(branch_type) :: b
       character(len=256) :: msg
       integer :: i, status
 
-      if (allocated(opts%a_star)) call usage_error("branch takes no --a-star")
       msg = ""
       call trace_branch(opts%model, params, b, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
-      call write_header(unit, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
+      call write_header(out, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
          model_name(opts%model), params, "a_star c_star P_star b_star zone_case stable event", &
          [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: 1 = stable under load control", &
          event_legend(1), event_legend(2), event_legend(3)])
       do i = 1, b%n
-         call write_row(unit, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
+         call write_row(out, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
             b%a_star(i) + 0.4_wp*(b%c_star(i) - b%a_star(i))], &
             [b%zone_case(i), merge(1, 0, b%stable(i)), b%event(i)])
       end do
    end subroutine run_branch
 
    !> path: the events of loading (stage 1) and unloading (stage 2).
-   subroutine run_path(opts, params, unit)
+   subroutine run_path(opts, params)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
-      integer, intent(in) :: unit
       type(path_type) :: path
       character(len=256) :: msg
       integer :: i, status
@@ -160,86 +183,159 @@ contains
       msg = ""
       call load_path(opts%model, params, path, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
-      call write_header(unit, opts%format, "load-controlled loading and unloading", &
+      call write_header(out, opts%format, "load-controlled loading and unloading", &
          model_name(opts%model), params, "stage event a_star c_star P_star", &
          [character(len=80) :: "stage: 1 loading, 2 unloading", event_legend(1), &
          event_legend(2), "P_fc = "//format_real(path%p_fc)//"  P_pf = "// &
          format_real(path%p_pf), "P-a hysteresis loop area = "//format_real(path%loop_area)])
       do i = 1, path%n
-         call write_row_ints_first(unit, opts%format, [path%stage(i), path%event(i)], &
+         call write_row_ints_first(out, opts%format, [path%stage(i), path%event(i)], &
             [path%a_star(i), path%c_star(i), path%p_star(i)])
       end do
    end subroutine run_path
 
-   !> critical: P_fc and P_pf over alpha x mu.
-   subroutine run_critical(opts, unit)
+   !> critical: P_fc and P_pf over alpha x mu. A failing (alpha, mu) never loses the
+   !> table: its row is written with NaN forces, standard error names it and its reason,
+   !> and rows_failed makes the exit status 1 once the whole table is written.
+   subroutine run_critical(opts, si_params, rows_failed)
       type(cli_options), intent(in) :: opts
-      integer, intent(in) :: unit
+      !> alpha and mu from the SI options (when given)
+      type(params_type), intent(in) :: si_params
+      logical, intent(out) :: rows_failed
       real(wp), allocatable :: alpha(:), mu(:), p_fc(:, :), p_pf(:, :)
-      integer, allocatable :: fc_mech(:, :), pf_mech(:, :)
+      integer, allocatable :: fc_mech(:, :), pf_mech(:, :), row_stat(:)
+      character(len=256), allocatable :: row_msg(:)
       character(len=256) :: msg
-      integer :: i, j, status
+      type(params_type) :: params
+      integer :: i, j, status, n_failed
       real(wp) :: t0, t1
       logical :: progress
 
       alpha = [0.3_wp]
       mu = [1.0_wp]
+      if (si_given(opts)) then
+         alpha = [si_params%alpha]
+         mu = [si_params%mu]
+      end if
       if (allocated(opts%alpha)) alpha = opts%alpha
       if (allocated(opts%mu)) mu = opts%mu
+      msg = ""
+      do j = 1, size(alpha)                   ! every argument checked before any work
+         call new_params(alpha(j), 1.0_wp, params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
+      do i = 1, size(mu)
+         call new_params(1.0_wp, mu(i), params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
       allocate (p_fc(size(mu), size(alpha)), p_pf(size(mu), size(alpha)), &
-         fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)))
+         fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)), &
+         row_stat(size(mu)), row_msg(size(mu)))
       call cpu_time(t0)
       progress = .false.
-      msg = ""
+      n_failed = 0
       do j = 1, size(alpha)
          call critical_sweep(opts%model, alpha(j), mu, p_fc(:, j), p_pf(:, j), fc_mech(:, j), &
-            pf_mech(:, j), status, msg)
-         if (status == wa_invalid_argument) call usage_error("--"//trim(msg))
-         if (status /= wa_ok) call numerical_error(status, msg)
+            pf_mech(:, j), status, msg, row_stat, row_msg)
+         do i = 1, size(mu)
+            if (row_stat(i) == wa_ok) cycle
+            n_failed = n_failed + 1
+            write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+               format_real(alpha(j))//", mu = "//format_real(mu(i))//": "// &
+               status_message(row_stat(i))//": "//trim(row_msg(i))// &
+               " (row written with NaN forces)"
+         end do
          call cpu_time(t1)
          if (t1 - t0 > 1.0_wp .and. isatty(error_unit)) progress = .true.
          if (progress) write (error_unit, '(a,i0,a,i0)') "critical: alpha ", j, " of ", size(alpha)
       end do
-      call write_header(unit, opts%format, "critical forces (full contact, pull-off)", &
-         model_name(opts%model), columns="alpha mu P_fc P_pf", notes=[character(len=120) :: &
+      rows_failed = n_failed > 0
+      call write_header(out, opts%format, "critical forces (full contact, pull-off)", &
+         model_name(opts%model), columns="alpha mu P_fc P_pf", notes=[character(len=400) :: &
          "P_fc: load at which full contact is first reached (loading from P* = 0)", &
          "P_pf: pull-off load on unloading from full contact (-Infinity: never)", &
+         failure_note(n_failed, size(p_fc)), &
          mechanism_notes(opts, alpha, mu, fc_mech, pf_mech)])
       do j = 1, size(alpha)
          do i = 1, size(mu)
-            call write_row(unit, opts%format, [alpha(j), mu(i), p_fc(i, j), p_pf(i, j)])
+            call write_row(out, opts%format, [alpha(j), mu(i), p_fc(i, j), p_pf(i, j)])
          end do
       end do
+      if (rows_failed) write (error_unit, '(a,i0,a,i0,a)') "wavyadhesion: critical: ", &
+         n_failed, " of ", size(p_fc), " rows failed (written with NaN forces); exit status 1"
    end subroutine run_critical
 
-   !> Header lines locating in mu each change of mechanism (table format only).
+   !> A header line saying how many rows failed (none when every row succeeded).
+   function failure_note(n_failed, n_rows) result(notes)
+      integer, intent(in) :: n_failed, n_rows
+      character(len=400), allocatable :: notes(:)
+      character(len=24) :: a, b
+      allocate (notes(0))
+      if (n_failed == 0) return
+      write (a, '(i0)') n_failed
+      write (b, '(i0)') n_rows
+      notes = [character(len=400) :: trim(a)//" of "//trim(b)//" rows failed: their P_fc "// &
+         "and P_pf are NaN (reasons on standard error)"]
+   end function failure_note
+
+   !> Header lines locating in mu each change of mechanism (table format only), between
+   !> consecutive rows that succeeded. A change that cannot be located to 1e-10 (the load
+   !> path fails inside the bracket) is given as the interval known to hold it.
    function mechanism_notes(opts, alpha, mu, fc_mech, pf_mech) result(notes)
       type(cli_options), intent(in) :: opts
       real(wp), intent(in) :: alpha(:), mu(:)
       integer, intent(in) :: fc_mech(:, :), pf_mech(:, :)
-      character(len=120), allocatable :: notes(:)
+      character(len=400), allocatable :: notes(:)
       character(len=*), parameter :: names(0:3) = [character(len=12) :: "gradual", &
          "jump case 1", "jump case 2", "snap at P=0"]
       character(len=256) :: msg
-      real(wp) :: mu_c
-      integer :: i, j, which, status, m(2)
+      character(len=:), allocatable :: where, change
+      real(wp) :: mu_c, bracket(2)
+      integer :: i, k, j, which, status, m(2)
       allocate (notes(0))
       if (opts%format == "csv") return
       do j = 1, size(alpha)
-         do i = 1, size(mu) - 1
+         i = next_good(fc_mech(:, j), 0)
+         do while (i > 0)
+            k = next_good(fc_mech(:, j), i)
+            if (k == 0) exit
             do which = 1, 2
-               if (which == 1) m = fc_mech(i:i + 1, j)
-               if (which == 2) m = pf_mech(i:i + 1, j)
+               if (which == 1) m = [fc_mech(i, j), fc_mech(k, j)]
+               if (which == 2) m = [pf_mech(i, j), pf_mech(k, j)]
                if (m(1) == m(2)) cycle
-               call mechanism_change(opts%model, alpha(j), which, mu(i), mu(i + 1), mu_c, status, msg)
-               if (status /= wa_ok) call numerical_error(status, msg)
-               notes = [notes, "alpha "//format_real(alpha(j))//" mu "//format_real(mu_c)// &
-                  merge(" P_fc: ", " P_pf: ", which == 1)//trim(names(m(1)))//" -> "// &
-                  trim(names(m(2)))]
+               msg = ""
+               call mechanism_change(opts%model, alpha(j), which, mu(i), mu(k), mu_c, status, &
+                  msg, bracket)
+               change = merge(" P_fc: ", " P_pf: ", which == 1)//trim(names(m(1)))//" -> "// &
+                  trim(names(m(2)))
+               if (status == wa_ok) then
+                  where = " mu "//format_real(mu_c)
+               else
+                  where = " mu in ["//format_real(bracket(1))//", "//format_real(bracket(2))//"]"
+                  write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+                     format_real(alpha(j))//":"//where//change//": "//trim(msg)
+                  change = change//" (not located further: the load path fails there)"
+               end if
+               notes = [character(len=400) :: notes, "alpha "//format_real(alpha(j))//where// &
+                  change]
             end do
+            i = k
          end do
       end do
    end function mechanism_notes
+
+   !> The next row after i whose forces were computed (mechanism >= 0), 0 when none.
+   pure integer function next_good(mechanism, i)
+      integer, intent(in) :: mechanism(:), i
+      integer :: r
+      next_good = 0
+      do r = i + 1, size(mechanism)
+         if (mechanism(r) >= 0) then
+            next_good = r
+            return
+         end if
+      end do
+   end function next_good
 
    function event_legend(line) result(text)
       integer, intent(in) :: line
@@ -253,19 +349,22 @@ contains
       end if
    end function event_legend
 
-   subroutine write_row_ints_first(unit, format, ints, reals)
-      integer, intent(in) :: unit
+   !> A path row: stage and event first, then the reals (same separators as write_row).
+   subroutine write_row_ints_first(out, format, ints, reals)
+      type(sink_type), intent(inout) :: out
       character(len=*), intent(in) :: format
       integer, intent(in) :: ints(:)
       real(wp), intent(in) :: reals(:)
       character(len=1) :: sep
+      character(len=32) :: head
       sep = merge(",", " ", format == "csv")
-      write (unit, '(i0,a,i0,a)', advance="no") ints(1), sep, ints(2), sep
-      call write_row(unit, format, reals)
+      write (head, '(i0,a,i0)') ints(1), sep, ints(2)
+      call write_row(out, format, reals, prefix=trim(head)//sep)
    end subroutine write_row_ints_first
 
    subroutine usage_error(message)
       character(len=*), intent(in) :: message
+      call discard_sink(out)
       write (error_unit, '(a)') "wavyadhesion: "//message
       write (error_unit, '(a)') "Try 'wavyadhesion --help'."
       stop 2, quiet=.true.
@@ -274,13 +373,15 @@ contains
    subroutine numerical_error(status, message)
       integer, intent(in) :: status
       character(len=*), intent(in) :: message
+      call discard_sink(out)
       write (error_unit, '(a)') "wavyadhesion: "//status_message(status)//": "//trim(message)// &
          " (no table written)"
       stop 1, quiet=.true.
    end subroutine numerical_error
 
    subroutine print_help()
-      write (output_unit, '(a)') &
+      integer :: i
+      character(len=100), parameter :: text(34) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -291,23 +392,33 @@ contains
          "  branch    the equilibrium curve P*(a*), c*(a*) with folds and case switches", &
          "            (default; alpha=0.3, mu=1, dw)", &
          "  point     every equilibrium at given a*: --a-star X[,X...]", &
-         "  path      loading and unloading under load control: jumps, full contact, pull-off", &
+         "  path      loading and unloading under load control: jumps, full contact,", &
+         "            pull-off", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
          "            --mu-range LO:HI:N[:log]", &
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &
-         "  --alpha A          Johnson's parameter, > 0 (default 0.3)", &
-         "  --mu U             transition parameter, >= 0 (default 1)", &
-         "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2]", &
+         "  --alpha A          Johnson's parameter, in [1e-12, 1e12] (default 0.3)", &
+         "  --mu U             transition parameter, 0 or in [1e-100, 1e100] (default 1)", &
+         "  --mu-range LO:HI:N[:log]", &
+         "                     N values of mu from LO to HI (critical only; not with --mu)", &
+         "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
-         "  --output FILE      write the table to FILE instead of standard output", &
+         "  --output FILE      write the table to FILE instead of standard output; FILE is", &
+         "                     replaced only once the whole table is written", &
          "  --help, --version", &
-         "SI input instead of --alpha/--mu:", &
-         "  --E1 --nu1 --E2 --nu2 (or --Estar) [Pa], --period --amplitude [m],", &
+         "SI input instead of --alpha/--mu/--mu-range (the whole set, not mixed):", &
+         "  --Estar, or all of --E1 --nu1 --E2 --nu2 [Pa], --period --amplitude [m],", &
          "  --work-of-adhesion [J/m^2], --peak-stress [Pa]", &
          "", &
-         "Exit status: 0 ok, 1 numerical failure (no table written), 2 usage error."
+         "Numbers are decimal (0.3, -1, 2.5e-3); each option may be given once.", &
+         "Exit status: 0 ok; 2 usage error; 1 numerical failure or write error. No table", &
+         "is written on failure, except by critical, which writes every row (NaN where a", &
+         "row failed, named on standard error) and then exits with 1."]
+      do i = 1, size(text)
+         call put_line(out, trim(text(i)))
+      end do
    end subroutine print_help
 
 end program wavyadhesion_cli

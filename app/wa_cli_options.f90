@@ -1,14 +1,19 @@
 !> Command-line parsing for the `wavyadhesion` driver (SPEC section 7). Usage errors
 !> are returned as a message; the caller prints it and exits with status 2.
 module wa_cli_options
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+      ieee_quiet_nan
    use wavyadhesion, only: wp, model_westergaard, model_jkr, model_dw, model_md
    implicit none
    private
 
-   public :: cli_options, parse_command_line, parse_real_list, model_name
+   public :: cli_options, parse_command_line, parse_real_list, model_name, given, si_given
 
    integer, parameter :: max_values = 100000
+   !> The SI options: moduli (1-4), Estar (5), geometry and adhesion (6-9).
+   character(len=*), parameter :: si_names(9) = [character(len=18) :: "--E1", "--nu1", &
+      "--E2", "--nu2", "--Estar", "--period", "--amplitude", "--work-of-adhesion", &
+      "--peak-stress"]
 
    type :: cli_options
       character(len=:), allocatable :: command
@@ -18,6 +23,8 @@ module wa_cli_options
       logical :: help = .false., version = .false.
       !> SI inputs (NaN when not given)
       real(wp) :: e1, nu1, e2, nu2, estar, period, amplitude, work, peak
+      !> The options given, as "|--alpha|--mu|" (each option may be given once)
+      character(len=:), allocatable :: given
    end type cli_options
 
 contains
@@ -56,11 +63,85 @@ contains
             return
          end if
          val = argument(i + 1)
+         if (given(opts, arg)) then
+            error = "option "//arg//" is given twice (give each option once)"
+            return
+         end if
          call set_option(opts, arg, val, error)
          if (allocated(error)) return
+         opts%given = opts%given//arg//"|"
          i = i + 2
       end do
+      call check_combination(opts, error)
    end subroutine parse_command_line
+
+   !> True when option `name` (e.g. "--alpha") was given.
+   pure logical function given(opts, name)
+      type(cli_options), intent(in) :: opts
+      character(len=*), intent(in) :: name
+      given = index(opts%given, "|"//name//"|") > 0
+   end function given
+
+   !> True when any SI option was given.
+   pure logical function si_given(opts)
+      type(cli_options), intent(in) :: opts
+      integer :: k
+      si_given = .false.
+      do k = 1, size(si_names)
+         si_given = si_given .or. given(opts, trim(si_names(k)))
+      end do
+   end function si_given
+
+   !> Options that contradict each other, are incomplete, or do not apply to the
+   !> subcommand: a usage error rather than a silent choice.
+   subroutine check_combination(opts, error)
+      type(cli_options), intent(in) :: opts
+      character(len=:), allocatable, intent(out) :: error
+      character(len=:), allocatable :: missing
+      integer :: k
+      if (given(opts, "--mu") .and. given(opts, "--mu-range")) then
+         error = "--mu and --mu-range cannot be used together (give one)"
+      else if (given(opts, "--mu-range") .and. opts%command /= "critical") then
+         error = "--mu-range is only for the critical subcommand"
+      else if (given(opts, "--a-star") .and. opts%command /= "point") then
+         error = "--a-star is only for the point subcommand"
+      end if
+      if (allocated(error) .or. .not. si_given(opts)) return
+      if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
+         error = "SI options (--E1 ... --peak-stress) cannot be combined with --alpha, "// &
+            "--mu or --mu-range (they define alpha and mu): give one or the other"
+         return
+      end if
+      if (given(opts, "--Estar")) then
+         do k = 1, 4
+            if (given(opts, trim(si_names(k)))) then
+               error = "--Estar cannot be combined with "//trim(si_names(k))// &
+                  " (give --Estar, or all of --E1 --nu1 --E2 --nu2)"
+               return
+            end if
+         end do
+         missing = ""
+      else
+         missing = missing_of(opts, si_names(1:4))
+         if (missing == " --E1 --nu1 --E2 --nu2") missing = " --Estar (or --E1 --nu1 --E2 --nu2)"
+      end if
+      missing = missing//missing_of(opts, si_names(6:9))
+      if (len(missing) > 0) error = "SI input is incomplete: missing"//missing// &
+         " (needed: --Estar or --E1 --nu1 --E2 --nu2, and --period --amplitude "// &
+         "--work-of-adhesion --peak-stress)"
+   end subroutine check_combination
+
+   !> " --x --y" for the names not given.
+   pure function missing_of(opts, names) result(missing)
+      type(cli_options), intent(in) :: opts
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: missing
+      integer :: k
+      missing = ""
+      do k = 1, size(names)
+         if (.not. given(opts, trim(names(k)))) missing = missing//" "//trim(names(k))
+      end do
+   end function missing_of
 
    subroutine set_option(opts, arg, val, error)
       type(cli_options), intent(inout) :: opts
@@ -86,7 +167,12 @@ contains
          else
             opts%format = val
          end if
-      case ("--output"); opts%output = val
+      case ("--output")
+         if (len(val) == 0) then
+            error = "--output: the file name is empty"
+         else
+            opts%output = val
+         end if
       case ("--E1"); call parse_real(val, arg, opts%e1, error)
       case ("--nu1"); call parse_real(val, arg, opts%nu1, error)
       case ("--E2"); call parse_real(val, arg, opts%e2, error)
@@ -101,7 +187,7 @@ contains
       end select
    end subroutine set_option
 
-   !> Comma-separated reals, e.g. "0.1,0.2".
+   !> Comma-separated reals, e.g. "0.1,0.2"; each item must be a whole number token.
    subroutine parse_real_list(text, name, values, error)
       character(len=*), intent(in) :: text, name
       real(wp), allocatable, intent(out) :: values(:)
@@ -109,7 +195,7 @@ contains
       integer :: start, comma, k, nvals
       nvals = count([(text(k:k) == ",", k=1, len(text))]) + 1
       if (nvals > max_values) then
-         error = name//": too many values"
+         error = name//": too many values (at most 100000)"
          return
       end if
       allocate (values(nvals))
@@ -128,59 +214,161 @@ contains
       character(len=*), intent(in) :: text
       real(wp), allocatable, intent(out) :: values(:)
       character(len=:), allocatable, intent(out) :: error
-      character(len=:), allocatable :: spec
-      real(wp), allocatable :: parts(:)
+      character(len=*), parameter :: form = "expected LO:HI:N[:log] with 0 <= LO <= HI "// &
+         "(LO > 0 with :log) and N an integer in [1, 100000]"
+      character(len=:), allocatable :: part(:)
+      real(wp) :: lo, hi
       logical :: logscale
-      integer :: n, i
-      spec = text
-      logscale = .false.
-      if (len(spec) > 4) then
-         if (spec(len(spec) - 3:) == ":log") then
-            logscale = .true.
-            spec = spec(:len(spec) - 4)
-         end if
-      end if
-      do i = 1, len(spec)
-         if (spec(i:i) == ":") spec(i:i) = ","
-      end do
-      call parse_real_list(spec, "--mu-range", parts, error)
-      if (allocated(error)) return
-      if (size(parts) /= 3) then
-         error = "--mu-range: expected LO:HI:N[:log], got '"//text//"'"
+      integer :: n, i, ios
+
+      call split(text, ":", part)
+      if (size(part) < 3 .or. size(part) > 4) then
+         error = "--mu-range: '"//text//"' is not LO:HI:N[:log] ("//form//")"
          return
       end if
-      n = nint(parts(3))
-      if (n < 1 .or. abs(parts(3) - n) > 0 .or. n > max_values) then
-         error = "--mu-range: N must be an integer in [1, 100000]"
-      else if (.not. (parts(1) >= 0.0_wp .and. parts(2) >= parts(1))) then
-         error = "--mu-range: need 0 <= LO <= HI"
-      else if (logscale .and. parts(1) <= 0.0_wp) then
-         error = "--mu-range: LO must be > 0 with :log"
+      logscale = size(part) == 4
+      if (logscale .and. trim(part(min(4, size(part)))) /= "log") then
+         error = "--mu-range: '"//trim(part(4))//"' is not 'log' ("//form//")"
+         return
+      end if
+      call parse_real(trim(part(1)), "--mu-range LO", lo, error, form)
+      if (.not. allocated(error)) call parse_real(trim(part(2)), "--mu-range HI", hi, error, &
+         form)
+      if (allocated(error)) return
+      n = 0
+      ios = 1
+      if (len_trim(part(3)) > 0 .and. len_trim(part(3)) <= 6 .and. &
+         verify(trim(part(3)), "0123456789") == 0) read (part(3), *, iostat=ios) n
+      if (ios /= 0 .or. n < 1 .or. n > max_values) then
+         error = "--mu-range: N = '"//trim(part(3))//"' is not an integer in [1, 100000]"
+      else if (.not. (lo >= 0.0_wp .and. hi >= lo)) then
+         error = "--mu-range: need 0 <= LO <= HI ("//form//")"
+      else if (logscale .and. lo <= 0.0_wp) then
+         error = "--mu-range: LO must be > 0 with :log ("//form//")"
       end if
       if (allocated(error)) return
       allocate (values(n))
-      values(1) = parts(1)
+      values(1) = lo
       do i = 2, n
          if (logscale) then
-            values(i) = parts(1)*(parts(2)/parts(1))**(real(i - 1, wp)/real(n - 1, wp))
+            values(i) = lo*(hi/lo)**(real(i - 1, wp)/real(n - 1, wp))
          else
-            values(i) = parts(1) + (parts(2) - parts(1))*real(i - 1, wp)/real(n - 1, wp)
+            values(i) = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
          end if
       end do
-      if (n > 1) values(n) = parts(2)
+      if (n > 1) values(n) = hi
    end subroutine parse_mu_range
 
-   subroutine parse_real(text, name, x, error)
+   !> The pieces of text between separators (at most 5).
+   pure subroutine split(text, sep, part)
+      character(len=*), intent(in) :: text, sep
+      character(len=:), allocatable, intent(out) :: part(:)
+      integer :: start, k, n, at(6)
+      n = 1
+      at(1) = 0
+      do k = 1, len(text)
+         if (text(k:k) /= sep) cycle
+         n = n + 1
+         if (n > 5) exit
+         at(n) = k
+      end do
+      n = min(n, 5)
+      at(n + 1) = len(text) + 1
+      allocate (character(len=max(1, len(text))) :: part(n))
+      do k = 1, n
+         start = at(k) + 1
+         part(k) = text(start:at(k + 1) - 1)
+      end do
+   end subroutine split
+
+   !> One real number: the whole token must be a decimal number, [+-]digits[.digits]
+   !> [e[+-]digits] (as C strtod and Python float read it, without inf/nan/hex), and finite.
+   subroutine parse_real(text, name, x, error, range)
       character(len=*), intent(in) :: text, name
       real(wp), intent(out) :: x
       character(len=:), allocatable, intent(out) :: error
+      !> The valid range, for the message (default: from the option's name)
+      character(len=*), intent(in), optional :: range
+      character(len=:), allocatable :: expected
       integer :: ios
       x = 0.0_wp
       ios = 1
-      if (len_trim(text) > 0 .and. verify(trim(text), "0123456789+-.eEdD") == 0) &
-         read (text, *, iostat=ios) x
-      if (ios /= 0 .or. ieee_is_nan(x)) error = name//": '"//text//"' is not a number"
+      if (is_number(text)) read (text, *, iostat=ios) x
+      if (present(range)) then
+         expected = range
+      else
+         expected = "a real number in "//valid_range(name)
+      end if
+      if (ios /= 0) then
+         error = name//": '"//text//"' is not a number (expected "//expected//")"
+      else if (ieee_is_nan(x) .or. .not. ieee_is_finite(x)) then
+         error = name//": '"//text//"' is too large for double precision (expected "// &
+            expected//")"
+      end if
    end subroutine parse_real
+
+   !> True when text is exactly [+-](d+[.d*] | .d+)[(e|E)[+-]d+].
+   pure logical function is_number(text)
+      character(len=*), intent(in) :: text
+      integer :: i, n, mantissa
+      is_number = .false.
+      n = len(text)
+      i = 1
+      if (n == 0) return
+      if (scan(text(1:1), "+-") == 1) i = 2
+      mantissa = 0
+      do while (i <= n)
+         if (.not. is_digit(text(i:i))) exit
+         mantissa = mantissa + 1
+         i = i + 1
+      end do
+      if (i <= n) then
+         if (text(i:i) == ".") then
+            i = i + 1
+            do while (i <= n)
+               if (.not. is_digit(text(i:i))) exit
+               mantissa = mantissa + 1
+               i = i + 1
+            end do
+         end if
+      end if
+      if (mantissa == 0) return
+      if (i <= n) then
+         if (scan(text(i:i), "eE") /= 1) return
+         i = i + 1
+         if (i <= n) then
+            if (scan(text(i:i), "+-") == 1) i = i + 1
+         end if
+         if (i > n) return
+         do while (i <= n)
+            if (.not. is_digit(text(i:i))) return
+            i = i + 1
+         end do
+      end if
+      is_number = .true.
+   end function is_number
+
+   pure logical function is_digit(c)
+      character, intent(in) :: c
+      is_digit = c >= "0" .and. c <= "9"
+   end function is_digit
+
+   !> The valid range of a numeric option, as the library states it.
+   pure function valid_range(name) result(range)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: range
+      select case (name)
+      case ("--alpha"); range = "[1e-12, 1e12]"         ! as wa_params states them
+      case ("--mu"); range = "0 or [1e-100, 1e100]"
+      case ("--a-star"); range = "[0, 1/2]"
+      case ("--E1", "--E2", "--Estar"); range = "(0, inf) Pa"
+      case ("--nu1", "--nu2"); range = "(-1, 1/2]"
+      case ("--period", "--amplitude"); range = "(0, inf) m"
+      case ("--work-of-adhesion"); range = "(0, inf) J/m^2"
+      case ("--peak-stress"); range = "[0, inf) Pa"
+      case default; range = "(-inf, inf)"
+      end select
+   end function valid_range
 
    function model_name(model) result(name)
       integer, intent(in) :: model
@@ -209,6 +397,7 @@ contains
       opts%command = "branch"
       opts%format = "table"
       opts%output = ""
+      opts%given = "|"
       opts%e1 = nan; opts%nu1 = nan; opts%e2 = nan; opts%nu2 = nan; opts%estar = nan
       opts%period = nan; opts%amplitude = nan; opts%work = nan; opts%peak = nan
    end subroutine reset

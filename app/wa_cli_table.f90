@@ -4,6 +4,7 @@
 module wa_cli_table
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use wavyadhesion, only: wp, params_type, wa_version
+   use wa_cli_output, only: sink_type, put_line
    implicit none
    private
 
@@ -12,44 +13,47 @@ module wa_cli_table
 contains
 
    !> Comment block (table) or column-name row (csv).
-   subroutine write_header(unit, format, what, model, params, columns, notes)
-      integer, intent(in) :: unit
+   subroutine write_header(out, format, what, model, params, columns, notes)
+      type(sink_type), intent(inout) :: out
       character(len=*), intent(in) :: format, what, model, columns
       type(params_type), intent(in), optional :: params
       character(len=*), intent(in), optional :: notes(:)
       integer :: i
       if (format == "csv") then
-         write (unit, '(a)') csv_names(columns)
+         call put_line(out, csv_names(columns))
          return
       end if
-      write (unit, '(a)') "# wavyadhesion "//wa_version//": "//what
-      write (unit, '(a)') "# model: "//model
+      call put_line(out, "# wavyadhesion "//wa_version//": "//what)
+      call put_line(out, "# model: "//model)
       if (present(params)) then
-         write (unit, '(a)') "# alpha = "//format_real(params%alpha)//"  mu = "// &
-            format_real(params%mu)
-         write (unit, '(a)') "# Sigma0 = "//format_real(params%sigma0)//"  Dcod = "// &
-            format_real(params%dcod)
+         call put_line(out, "# alpha = "//format_real(params%alpha)//"  mu = "// &
+            format_real(params%mu))
+         call put_line(out, "# Sigma0 = "//format_real(params%sigma0)//"  Dcod = "// &
+            format_real(params%dcod))
       end if
       if (present(notes)) then
          do i = 1, size(notes)
-            write (unit, '(a)') "# "//trim(notes(i))
+            call put_line(out, "# "//trim(notes(i)))
          end do
       end if
-      write (unit, '(a)') "# columns: "//columns
+      call put_line(out, "# columns: "//columns)
    end subroutine write_header
 
    !> One row: reals then integers, separated by blanks (table) or commas (csv).
-   subroutine write_row(unit, format, reals, ints)
-      integer, intent(in) :: unit
+   subroutine write_row(out, format, reals, ints, prefix)
+      type(sink_type), intent(inout) :: out
       character(len=*), intent(in) :: format
       real(wp), intent(in) :: reals(:)
       integer, intent(in), optional :: ints(:)
+      !> Text before the reals (e.g. integer columns that come first)
+      character(len=*), intent(in), optional :: prefix
       character(len=:), allocatable :: line, sep
       character(len=12) :: itext
       integer :: i
       sep = " "
       if (format == "csv") sep = ","
       line = ""
+      if (present(prefix)) line = prefix
       do i = 1, size(reals)
          if (i > 1) line = line//sep
          line = line//adjustr_field(format_real(reals(i)), format)
@@ -60,7 +64,7 @@ contains
             line = line//sep//trim(itext)
          end do
       end if
-      write (unit, '(a)') line
+      call put_line(out, line)
    end subroutine write_row
 
    !> ES24.16E3, or Infinity / -Infinity / NaN spelled so strtod and float() read them.

@@ -177,9 +177,13 @@ int wa_load_path_msg(int model, double alpha, double mu, int capacity,
                      char *message, int message_capacity);
 
 /* P_fc*, P_pf* and their mechanisms (WA_MECHANISM_*) for one alpha and n_mu values of
-   mu (the arrays have n_mu elements; they may be NULL when n_mu is 0). Every mu is
-   validated before any work; on failure, when n_mu > 0, every element of each output
-   array that is not NULL is NaN (mechanisms -1). Never WA_CAPACITY_TOO_SMALL. */
+   mu (the arrays have n_mu elements; they may be NULL when n_mu is 0). Every argument
+   (every mu) is validated before any work: on an invalid one (WA_INVALID_ARGUMENT), when
+   n_mu > 0, every element of each output array that is not NULL is NaN (mechanisms -1).
+   A mu whose load path fails does not stop the sweep: its row gets NaN forces and
+   mechanisms -1, every other row is written, and the status of the first failing row is
+   returned (its message names that mu and the number of failing rows).
+   wa_critical_sweep_status gives the status of each row. Never WA_CAPACITY_TOO_SMALL. */
 int wa_critical_sweep(int model, double alpha, int n_mu, const double *mu,
                       double *P_fc, double *P_pf, int *fc_mechanism, int *pf_mechanism);
 
@@ -187,6 +191,14 @@ int wa_critical_sweep(int model, double alpha, int n_mu, const double *mu,
 int wa_critical_sweep_msg(int model, double alpha, int n_mu, const double *mu,
                           double *P_fc, double *P_pf, int *fc_mechanism, int *pf_mechanism,
                           char *message, int message_capacity);
+
+/* As wa_critical_sweep_msg; row_status[i] (n_mu elements, non-NULL when n_mu > 0)
+   receives the status of row i: WA_OK where its forces were computed, else the status
+   of its failure (on an invalid argument, that status in every row). */
+int wa_critical_sweep_status(int model, double alpha, int n_mu, const double *mu,
+                             double *P_fc, double *P_pf, int *fc_mechanism,
+                             int *pf_mechanism, int *row_status, char *message,
+                             int message_capacity);
 
 /* Short fixed text of a status code: a static NUL-terminated string, never NULL
    ("unknown status" for codes the library does not return). Do not free it. */

@@ -9,7 +9,7 @@
 !> Thread safe: no state survives a call (the status texts are immutable data).
 module wa_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_char, &
-      c_associated, c_f_pointer, c_loc
+      c_associated, c_f_pointer, c_loc, c_null_ptr
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok, wa_invalid_argument, wa_capacity_too_small, &
       wa_numerical_error, set_error
@@ -27,7 +27,7 @@ module wa_capi
       capi_roots, capi_roots_msg, capi_status_message
    public :: capi_trace_branch, capi_trace_branch_msg, capi_critical_forces, &
       capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
-      capi_critical_sweep_msg
+      capi_critical_sweep_msg, capi_critical_sweep_status
    public :: capi_version
 
    !> Length of one status text, NUL included.
@@ -389,8 +389,10 @@ contains
 
    !> int wa_critical_sweep(model, alpha, n_mu, mu[], P_fc[], P_pf[], fc_mechanism[],
    !> pf_mechanism[]): P_fc*, P_pf* and how each is reached (WA_MECHANISM_*) for one
-   !> alpha over n_mu values of mu. Every mu is validated before any work; on failure
-   !> every output is NaN (mechanisms -1).
+   !> alpha over n_mu values of mu. Every argument (every mu) is validated before any
+   !> work; an invalid one writes NaN (mechanisms -1) everywhere. A mu whose load path
+   !> fails gets NaN (-1) in its row only; every other row is written and the status of
+   !> the first failing row is returned (wa_critical_sweep_status gives each row's).
    function capi_critical_sweep(model, alpha, n_mu, mu, p_fc, p_pf, fc_mechanism, &
          pf_mechanism) result(status) bind(C, name="wa_critical_sweep")
       !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
@@ -412,7 +414,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
-         status, msg)
+         c_null_ptr, .false., status, msg)
    end function capi_critical_sweep
 
    !> int wa_critical_sweep_msg(..., char *message, int message_capacity): as
@@ -443,9 +445,45 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
-         status, msg)
+         c_null_ptr, .false., status, msg)
       call copy_message(msg, message, message_capacity)
    end function capi_critical_sweep_msg
+
+   !> int wa_critical_sweep_status(..., int *row_status, char *message,
+   !> int message_capacity): as wa_critical_sweep_msg, and row_status[i] receives the
+   !> status of row i (WA_OK where its forces were computed; on an invalid argument,
+   !> that status in every row).
+   function capi_critical_sweep_status(model, alpha, n_mu, mu, p_fc, p_pf, fc_mechanism, &
+         pf_mechanism, row_status, message, message_capacity) result(status) &
+         bind(C, name="wa_critical_sweep_status")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Number of mu values, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: n_mu
+      !> const double[n_mu]: transition parameters, each >= 0
+      type(c_ptr), value, intent(in) :: mu
+      !> double[n_mu]: receives P_fc*
+      type(c_ptr), value, intent(in) :: p_fc
+      !> double[n_mu]: receives P_pf*
+      type(c_ptr), value, intent(in) :: p_pf
+      !> int[n_mu]: receives how full contact is reached
+      type(c_ptr), value, intent(in) :: fc_mechanism
+      !> int[n_mu]: receives how contact is lost
+      type(c_ptr), value, intent(in) :: pf_mechanism
+      !> int[n_mu]: receives the status of each row
+      type(c_ptr), value, intent(in) :: row_status
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
+         row_status, .true., status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_critical_sweep_status
 
    !> const char *wa_status_message(int status): a static NUL-terminated text, never
    !> NULL ("unknown status" for codes the library does not return).
@@ -719,18 +757,20 @@ contains
       status = int(stat, c_int)
    end subroutine path_core
 
-   !> Validate everything (every mu first), sweep, write the four arrays (NaN and -1
-   !> everywhere on failure). reals = [P_fc, P_pf], ints = [fc_mechanism, pf_mechanism].
-   subroutine sweep_core(model, alpha, n_mu, mu, reals, ints, status, msg)
+   !> Validate everything (every mu first), then sweep: a failing mu leaves NaN and -1 in
+   !> its row only (an invalid argument: in every row). reals = [P_fc, P_pf],
+   !> ints = [fc_mechanism, pf_mechanism]; rows = row_status, required when want_rows.
+   subroutine sweep_core(model, alpha, n_mu, mu, reals, ints, rows, want_rows, status, msg)
       integer(c_int), intent(in) :: model, n_mu
       real(c_double), intent(in) :: alpha
-      type(c_ptr), intent(in) :: mu, reals(2), ints(2)
+      type(c_ptr), intent(in) :: mu, reals(2), ints(2), rows
+      logical, intent(in) :: want_rows
       integer(c_int), intent(out) :: status
       character(len=*), intent(out) :: msg
       real(c_double), pointer :: mu_in(:), fc_out(:), pf_out(:)
-      integer(c_int), pointer :: fcm_out(:), pfm_out(:)
+      integer(c_int), pointer :: fcm_out(:), pfm_out(:), rows_out(:)
       real(c_double), allocatable :: p_fc(:), p_pf(:)
-      integer, allocatable :: fc_mech(:), pf_mech(:)
+      integer, allocatable :: fc_mech(:), pf_mech(:), row_stat(:)
       type(params_type) :: params
       integer :: stat, i
       character(len=12) :: text
@@ -742,9 +782,15 @@ contains
          call put_ints(ints(1), n_mu, -1)
          call put_ints(ints(2), n_mu, -1)
       end if
-      call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints], &
-         "mu, P_fc, P_pf, fc_mechanism and pf_mechanism", stat, msg)
+      if (want_rows) then
+         call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints, rows], &
+            "mu, P_fc, P_pf, fc_mechanism, pf_mechanism and row_status", stat, msg)
+      else
+         call check_outputs("", mu, "n_mu", n_mu, [mu, reals, ints], &
+            "mu, P_fc, P_pf, fc_mechanism and pf_mechanism", stat, msg)
+      end if
       if (stat /= wa_ok) then
+         if (want_rows .and. n_mu > 0) call put_ints(rows, n_mu, stat)
          status = int(stat, c_int)
          return
       end if
@@ -767,16 +813,22 @@ contains
             msg = trim(msg)//" (mu["//trim(text)//"])"
          end if
       end do
+      allocate (row_stat(n_mu))
+      row_stat = stat
       if (stat == wa_ok) then
          allocate (p_fc(n_mu), p_pf(n_mu), fc_mech(n_mu), pf_mech(n_mu))
-         call critical_sweep(int(model), alpha, mu_in, p_fc, p_pf, fc_mech, pf_mech, stat, msg)
+         call critical_sweep(int(model), alpha, mu_in, p_fc, p_pf, fc_mech, pf_mech, stat, &
+            msg, row_stat)
          call internal_capacity(stat, msg)
-         if (stat == wa_ok) then
-            fc_out = p_fc
-            pf_out = p_pf
-            fcm_out = int(fc_mech, c_int)
-            pfm_out = int(pf_mech, c_int)
-         end if
+         where (row_stat == wa_capacity_too_small) row_stat = wa_numerical_error
+         fc_out = p_fc                        ! every row: NaN and -1 where one failed
+         pf_out = p_pf
+         fcm_out = int(fc_mech, c_int)
+         pfm_out = int(pf_mech, c_int)
+      end if
+      if (want_rows) then
+         call c_f_pointer(rows, rows_out, [n_mu])
+         rows_out = int(row_stat, c_int)
       end if
       status = int(stat, c_int)
    end subroutine sweep_core

@@ -4,9 +4,9 @@
 !> load lands on the nearest stable piece that spans that load; the landing point is
 !> then solved to full precision.
 module wa_loadpath
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf, ieee_quiet_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, set_error, wa_numerical_error
+   use wa_status, only: wa_ok, set_error, wa_numerical_error, wa_not_converged
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
@@ -221,67 +221,164 @@ contains
       jump_from = merge(mechanism_jump_case1, mechanism_jump_case2, zone_case == zone_inside)
    end function jump_from
 
-   !> P_fc*, P_pf* and their mechanisms for one alpha over many mu.
+   !> P_fc*, P_pf* and their mechanisms for one alpha over many mu. A failing mu never
+   !> stops the sweep: its row gets NaN forces and mechanisms -1 and every other row is
+   !> computed. status is wa_ok when every row succeeded, else the status of the first
+   !> failing row, with errmsg naming its mu and the number of failing rows.
+   !> row_status and row_errmsg (optional, size(mu)) receive each row's own status and
+   !> message ("" for rows that succeeded).
    subroutine critical_sweep(model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_mechanism, &
-         status, errmsg)
+         status, errmsg, row_status, row_errmsg)
       integer, intent(in) :: model
       real(wp), intent(in) :: alpha, mu(:)
       real(wp), intent(out) :: p_fc(:), p_pf(:)
       integer, intent(out) :: fc_mechanism(:), pf_mechanism(:)
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      integer, intent(out), optional :: row_status(:)
+      character(len=*), intent(out), optional :: row_errmsg(:)
       type(params_type) :: params
       type(path_type) :: path
-      integer :: i
+      character(len=256) :: msg, first_msg
+      real(wp) :: first_mu
+      integer :: i, stat, first_stat, n_failed
+      status = wa_ok
+      first_stat = wa_ok
+      n_failed = 0
+      first_mu = 0.0_wp
       do i = 1, size(mu)
-         call new_params(alpha, mu(i), params, status, errmsg)
-         if (status /= wa_ok) return
-         call load_path(model, params, path, status, errmsg)
-         if (status /= wa_ok) return
-         p_fc(i) = path%p_fc
-         p_pf(i) = path%p_pf
-         fc_mechanism(i) = path%fc_mechanism
-         pf_mechanism(i) = path%pf_mechanism
+         msg = ""
+         call new_params(alpha, mu(i), params, stat, msg)
+         if (stat == wa_ok) call load_path(model, params, path, stat, msg)
+         if (present(row_status)) row_status(i) = stat
+         if (present(row_errmsg)) row_errmsg(i) = ""
+         if (stat == wa_ok) then
+            p_fc(i) = path%p_fc
+            p_pf(i) = path%p_pf
+            fc_mechanism(i) = path%fc_mechanism
+            pf_mechanism(i) = path%pf_mechanism
+            cycle
+         end if
+         p_fc(i) = ieee_value(1.0_wp, ieee_quiet_nan)
+         p_pf(i) = p_fc(i)
+         fc_mechanism(i) = -1
+         pf_mechanism(i) = -1
+         if (present(row_errmsg)) row_errmsg(i) = msg
+         n_failed = n_failed + 1
+         if (n_failed == 1) then
+            first_stat = stat
+            first_msg = msg
+            first_mu = mu(i)
+         end if
       end do
+      if (n_failed > 0) call set_error(first_stat, "mu = "//real_text(first_mu)//": "// &
+         trim(first_msg)//" ("//int_text(n_failed)//" of "//int_text(size(mu))// &
+         " rows failed; their forces are NaN)", status, errmsg)
    end subroutine critical_sweep
 
    !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the
-   !> full-contact (which = 1) or pull-off (which = 2) mechanism changes, to 1e-10 relative.
-   subroutine mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, errmsg)
+   !> full-contact (which = 1) or pull-off (which = 2) mechanism changes, to 1e-10 relative
+   !> (geometric bisection; arithmetic while the lower end is 0). A trial mu where the load
+   !> path fails is replaced by other points of the bracket (at 1/4, 3/4, 1/8, 7/8, 1/16,
+   !> 15/16 of it); when all of them fail too, or after 200 steps, the bisection stops with
+   !> wa_not_converged: `bracket` (optional) receives the interval still known to hold the
+   !> change (on success too) and mu_change its midpoint.
+   subroutine mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, errmsg, &
+         bracket)
       integer, intent(in) :: model, which
       real(wp), intent(in) :: alpha, mu_lo, mu_hi
       real(wp), intent(out) :: mu_change
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp) :: lo, hi, mid
-      integer :: m_lo, m_mid
+      real(wp), intent(out), optional :: bracket(2)
+      real(wp), parameter :: tries(7) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
+         0.0625_wp, 0.9375_wp]
+      integer, parameter :: max_steps = 200
+      character(len=256) :: msg
+      real(wp) :: lo, hi, x
+      integer :: m_lo, m_x, step, k, stat
+      logical :: done
 
       lo = mu_lo; hi = mu_hi
-      m_lo = mechanism_at(lo)
-      if (status /= wa_ok) return
-      do while (hi - lo > 1.0e-10_wp*hi)
-         mid = sqrt(lo*hi)
-         m_mid = mechanism_at(mid)
-         if (status /= wa_ok) return
-         if (m_mid == m_lo) then
-            lo = mid
-         else
-            hi = mid
-         end if
-      end do
-      mu_change = sqrt(lo*hi)
+      status = wa_ok
+      m_lo = mechanism_at(lo, stat, msg)
+      if (stat /= wa_ok) then
+         call set_error(stat, "mechanism change: mu_lo = "//real_text(lo)//": "//trim(msg), &
+            status, errmsg)
+      else
+         done = .false.
+         bisect: do step = 1, max_steps
+            done = .not. (hi - lo > 1.0e-10_wp*hi)
+            if (done) exit bisect
+            do k = 1, size(tries)
+               x = inside(lo, hi, tries(k))
+               done = .not. (x > lo .and. x < hi)          ! no representable point left
+               if (done) exit bisect
+               m_x = mechanism_at(x, stat, msg)
+               if (stat == wa_ok) exit
+            end do
+            if (stat /= wa_ok) then
+               call set_error(stat, "mechanism change not located further than ["// &
+                  real_text(lo)//", "//real_text(hi)//"]: the load path fails at every "// &
+                  "trial mu inside ("//trim(msg)//")", status, errmsg)
+               done = .true.
+               exit bisect
+            end if
+            if (m_x == m_lo) then
+               lo = x
+            else
+               hi = x
+            end if
+         end do bisect
+         if (.not. done) done = .not. (hi - lo > 1.0e-10_wp*hi)
+         if (.not. done) call set_error(wa_not_converged, &
+            "mechanism change: no convergence in 200 bisection steps", status, errmsg)
+      end if
+      mu_change = inside(lo, hi, 0.5_wp)
+      if (present(bracket)) bracket = [lo, hi]
    contains
-      integer function mechanism_at(mu)
+      !> The point at fraction f of [a, b]: geometric when a > 0, else arithmetic.
+      pure real(wp) function inside(a, b, f)
+         real(wp), intent(in) :: a, b, f
+         if (a > 0.0_wp) then
+            inside = a*(b/a)**f
+         else
+            inside = a + f*(b - a)
+         end if
+      end function inside
+
+      integer function mechanism_at(mu, stat, msg)
          real(wp), intent(in) :: mu
+         integer, intent(out) :: stat
+         character(len=*), intent(inout) :: msg
          type(params_type) :: params
          type(path_type) :: path
          mechanism_at = -1
-         call new_params(alpha, mu, params, status, errmsg)
-         if (status /= wa_ok) return
-         call load_path(model, params, path, status, errmsg)
+         msg = ""
+         call new_params(alpha, mu, params, stat, msg)
+         if (stat /= wa_ok) return
+         call load_path(model, params, path, stat, msg)
+         if (stat /= wa_ok) return
          mechanism_at = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
       end function mechanism_at
    end subroutine mechanism_change
+
+   !> A real in ES format with a 3-digit exponent, e.g. 7.9369860901363931E-001.
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=32) :: buf
+      write (buf, '(es24.16e3)') x
+      text = trim(adjustl(buf))
+   end function real_text
+
+   pure function int_text(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function int_text
 
    !> From the stable segment [seg, seg+1], walk along the branch toward rising load
    !> (dir = +1, loading) or falling load (dir = -1) while the segments stay stable; the

@@ -508,10 +508,12 @@ end subroutine fa_load_path
 
 !> P_fc*, P_pf* and their mechanisms for one alpha over n values of mu, in one call of
 !> wa_loadpath::critical_sweep. Every mu is validated first: the first invalid one is
-!> reported through ifail (1-based) and nothing is computed. On any failure every output
-!> is NaN (mechanisms -1).
+!> reported through ifail (1-based), nothing is computed and every output is NaN
+!> (mechanisms -1). A mu whose load path fails gets NaN (-1) in its own row and its
+!> status in row_status; every other row is computed, and status/message are those of
+!> the first failing row.
 subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_mechanism, &
-      ifail, status, message)
+      row_status, ifail, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok
@@ -535,15 +537,17 @@ subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_m
    integer(c_int), intent(out) :: fc_mechanism(n)
    !> How contact is lost (0 gradual, 1 jump case 1, 2 jump case 2)
    integer(c_int), intent(out) :: pf_mechanism(n)
+   !> Status of each row (wa_ok where its forces were computed)
+   integer(c_int), intent(out) :: row_status(n)
    !> Index of the invalid mu (1-based), 0 when every mu is valid
    integer(c_int), intent(out) :: ifail
-   !> wa_ok or the failure's status
+   !> wa_ok or the first failure's status
    integer(c_int), intent(out) :: status
    !> The failure's message
    character(len=256), intent(out) :: message
    !f2py threadsafe
    type(params_type) :: params
-   integer, allocatable :: fc_mech(:), pf_mech(:)
+   integer, allocatable :: fc_mech(:), pf_mech(:), row_stat(:)
    integer :: i, stat
 
    message = ""
@@ -557,15 +561,14 @@ subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_m
       call new_params(alpha, mu(i), params, stat, message)
       if (stat /= wa_ok) ifail = i
    end do
+   row_status = int(stat, c_int)
    if (stat == wa_ok .and. n > 0) then
-      allocate (fc_mech(n), pf_mech(n))
-      call critical_sweep(int(model), alpha, mu, p_fc, p_pf, fc_mech, pf_mech, stat, message)
-      if (stat == wa_ok) then
-         fc_mechanism = int(fc_mech, c_int)
-         pf_mechanism = int(pf_mech, c_int)
-      else
-         p_fc = ieee_value(1.0_c_double, ieee_quiet_nan); p_pf = p_fc
-      end if
+      allocate (fc_mech(n), pf_mech(n), row_stat(n))
+      call critical_sweep(int(model), alpha, mu, p_fc, p_pf, fc_mech, pf_mech, stat, message, &
+         row_stat)
+      fc_mechanism = int(fc_mech, c_int)
+      pf_mechanism = int(pf_mech, c_int)
+      row_status = int(row_stat, c_int)
    end if
    status = int(stat, c_int)
 end subroutine fa_critical_sweep

@@ -22,6 +22,7 @@ __all__ = [
     "Params",
     "WavyAdhesionError",
     "InvalidArgumentError",
+    "InvalidTypeError",
     "ConvergenceError",
     "NoSolutionError",
     "westergaard_load",
@@ -59,6 +60,19 @@ _BRANCH_CAPACITY = 4096
 
 # Events asked for in a first load_path() call (path_type holds at most 64).
 _PATH_CAPACITY = 64
+
+# The supported domain (WA_ALPHA_MIN ... WA_MU_MAX in include/wavyadhesion.h; a test
+# checks they agree). Used only to find the first bad point before any work: the
+# library's own check decides and words the message.
+_ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = 1e-12, 1e12, 1e-100, 1e100
+
+# Points per facade call in the vectorised functions. Between two calls Python runs and
+# raises KeyboardInterrupt on Ctrl-C (a Fortran call cannot be interrupted), so a chunk
+# should take well under a second: equilibrium ~2 us/point (DW) to ~50 us/point (MD near
+# its limits), critical forces ~1 ms (DW) to ~50 ms (MD) per mu. Calls this size or
+# smaller are one facade call, exactly as before chunking.
+_CHUNK_POINTS = 4096
+_CHUNK_SWEEP = 16
 
 #: Event codes of branch points and load-path events (SPEC section 7, include/wavyadhesion.h).
 EVENTS = {
@@ -103,6 +117,11 @@ class InvalidArgumentError(WavyAdhesionError, ValueError):
     """An argument is NaN, infinite or outside its valid range (status 1)."""
 
 
+class InvalidTypeError(InvalidArgumentError, TypeError):
+    """An argument has the wrong type (None, complex, a string, a masked array with
+    masked values): also a TypeError, and an InvalidArgumentError (status 1)."""
+
+
 class ConvergenceError(WavyAdhesionError):
     """A numerical failure: an iteration did not converge (status 3), a numerical
     building block failed (status 5), or no solution was found (status 2, see
@@ -142,12 +161,17 @@ def _model_name(code: int) -> str:
 def _scalar(x, name: str) -> float:
     arr = _float_array(x, name)
     if arr.ndim != 0:
-        raise InvalidArgumentError(f"{name} must be a scalar", _INVALID_ARGUMENT)
+        raise InvalidArgumentError(f"{name} must be a scalar, got shape {arr.shape}",
+                                   _INVALID_ARGUMENT)
     return float(arr)
 
 
 def _model_code(model) -> int:
-    if isinstance(model, str) and model.lower() in MODELS:
+    if not isinstance(model, str):
+        raise InvalidTypeError(
+            f"model must be a string, one of {', '.join(map(repr, MODELS))}; got "
+            f"{type(model).__name__} {model!r}", _INVALID_ARGUMENT)
+    if model.lower() in MODELS:
         return MODELS[model.lower()]
     raise InvalidArgumentError(
         f"model = {model!r} is not one of {', '.join(map(repr, MODELS))}", _INVALID_ARGUMENT
@@ -155,11 +179,58 @@ def _model_code(model) -> int:
 
 
 def _float_array(x, name: str) -> np.ndarray:
+    """x as a float64 array. None (also inside a sequence), complex numbers, strings,
+    bytes and masked values are refused with an InvalidTypeError naming the argument
+    (numpy would read None as NaN, drop the imaginary part, parse strings and drop
+    masks)."""
+    if type(x) is float or type(x) is int:                # the common scalar case
+        return np.asarray(x, dtype=np.float64)
+    if x is None:
+        raise InvalidTypeError(f"{name} is None: give a real number or an array of them",
+                               _INVALID_ARGUMENT)
+    if isinstance(x, np.ma.MaskedArray):
+        n_masked = int(np.ma.count_masked(x))
+        if n_masked:
+            raise InvalidTypeError(
+                f"{name} is a masked array with {n_masked} masked value(s): masks are not "
+                f"supported (pass x.filled(np.nan) or x.compressed())", _INVALID_ARGUMENT)
+        x = np.ma.getdata(x)
+    if isinstance(x, np.ndarray) and x.dtype.kind in "fiub":
+        return np.asarray(x, dtype=np.float64)
     try:
-        arr = np.asarray(x, dtype=np.float64)
+        raw = np.asarray(x)
     except (TypeError, ValueError) as exc:
-        raise InvalidArgumentError(f"{name}: not convertible to float ({exc})", 1) from None
-    return arr
+        raise InvalidTypeError(f"{name}: not convertible to float ({exc})",
+                               _INVALID_ARGUMENT) from None
+    kind = raw.dtype.kind
+    if kind == "c":
+        raise InvalidTypeError(f"{name} is complex ({raw.dtype}): give real numbers (the "
+                               f"imaginary part would be lost)", _INVALID_ARGUMENT)
+    if kind in "USVMm":
+        raise InvalidTypeError(f"{name}: {raw.dtype} values are not real numbers",
+                               _INVALID_ARGUMENT)
+    if kind == "O":
+        for v in raw.flat:
+            if v is None:
+                raise InvalidTypeError(f"{name} contains None: give real numbers",
+                                       _INVALID_ARGUMENT)
+            if isinstance(v, (complex, np.complexfloating)):
+                raise InvalidTypeError(f"{name} contains a complex number ({v!r})",
+                                       _INVALID_ARGUMENT)
+            if isinstance(v, (str, bytes)):
+                raise InvalidTypeError(f"{name} contains a string ({v!r})",
+                                       _INVALID_ARGUMENT)
+    try:
+        return np.asarray(raw, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise InvalidTypeError(f"{name}: not convertible to float ({exc})",
+                               _INVALID_ARGUMENT) from None
+
+
+def _chunks(n: int, size: int):
+    """Slices of at most `size` covering range(n) (one slice when n <= size)."""
+    for start in range(0, n, size):
+        yield slice(start, min(start + size, n))
 
 
 def _flat(arr: np.ndarray) -> np.ndarray:
@@ -247,9 +318,17 @@ def westergaard_load(a):
     a = _float_array(a, "a")
     if a.size == 0:
         return np.empty(a.shape)
-    p, nfail, ifail, status, message = _f.fa_westergaard_load(_flat(a))
-    if nfail:
-        _raise(status, message, _where(ifail, a.shape))
+    a_f = _flat(a)
+    if a_f.size <= _CHUNK_POINTS:
+        p, nfail, ifail, status, message = _f.fa_westergaard_load(a_f)
+        if nfail:
+            _raise(status, message, _where(ifail, a.shape))
+        return _shaped(p, a.shape)
+    p = np.empty(a_f.size)
+    for sl in _chunks(a_f.size, _CHUNK_POINTS):
+        p[sl], nfail, ifail, status, message = _f.fa_westergaard_load(a_f[sl])
+        if nfail:
+            _raise(status, message, _where(sl.start + ifail, a.shape))
     return _shaped(p, a.shape)
 
 
@@ -278,9 +357,17 @@ def jkr_load(alpha, a):
     alpha_b, a_b = np.broadcast_arrays(alpha, a)
     if a_b.size == 0:
         return np.empty(a_b.shape)
-    p, nfail, ifail, status, message = _f.fa_jkr_load(_flat(alpha_b), _flat(a_b))
-    if nfail:
-        _raise(status, message, _where(ifail, a_b.shape))
+    alpha_f, a_f = _flat(alpha_b), _flat(a_b)
+    if a_f.size <= _CHUNK_POINTS:
+        p, nfail, ifail, status, message = _f.fa_jkr_load(alpha_f, a_f)
+        if nfail:
+            _raise(status, message, _where(ifail, a_b.shape))
+        return _shaped(p, a_b.shape)
+    p = np.empty(a_f.size)
+    for sl in _chunks(a_f.size, _CHUNK_POINTS):
+        p[sl], nfail, ifail, status, message = _f.fa_jkr_load(alpha_f[sl], a_f[sl])
+        if nfail:
+            _raise(status, message, _where(sl.start + ifail, a_b.shape))
     return _shaped(p, a_b.shape)
 
 
@@ -333,11 +420,20 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
     shape = a_b.shape
     if a_b.size == 0:
         return Equilibrium(np.empty(shape), np.empty(shape), np.empty(shape, np.int32))
-    c, p, z, nfail, ifail, status, message = _f.fa_equilibrium(
-        code, _flat(alpha_b), _flat(mu_b), _flat(a_b)
-    )
-    if nfail and errors == "raise":
-        _raise(status, message, _where(ifail, shape))
+    alpha_f, mu_f, a_f = _flat(alpha_b), _flat(mu_b), _flat(a_b)
+    if a_f.size <= _CHUNK_POINTS:
+        c, p, z, nfail, ifail, status, message = _f.fa_equilibrium(code, alpha_f, mu_f, a_f)
+        if nfail and errors == "raise":
+            _raise(status, message, _where(ifail, shape))
+        return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape))
+    c = np.empty(a_f.size)
+    p = np.empty(a_f.size)
+    z = np.empty(a_f.size, dtype=np.int32)
+    for sl in _chunks(a_f.size, _CHUNK_POINTS):     # Ctrl-C is seen between chunks
+        c[sl], p[sl], z[sl], nfail, ifail, status, message = _f.fa_equilibrium(
+            code, alpha_f[sl], mu_f[sl], a_f[sl])
+        if nfail and errors == "raise":
+            _raise(status, message, _where(sl.start + ifail, shape))
     return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape))
 
 
@@ -569,12 +665,26 @@ class CriticalForces:
     fc_mechanism, pf_mechanism : numpy.ndarray of int
         Index into :data:`MECHANISMS` (0 gradual, 1 jump from case 1, 2 jump from
         case 2, 3 snap at P* = 0); -1 where a point failed with ``errors="nan"``.
+    status : numpy.ndarray of int
+        The library's status of each point: 0 where it succeeded, else 1 invalid
+        argument, 2 no solution, 3 not converged, 5 numerical error (non-zero only with
+        ``errors="nan"``: with "raise" a failure raises).
+    messages : dict
+        The library's message for each failed point, keyed by its index tuple (``()``
+        for scalar inputs); empty when every point succeeded.
     """
 
     P_fc: np.ndarray
     P_pf: np.ndarray
     fc_mechanism: np.ndarray
     pf_mechanism: np.ndarray
+    status: np.ndarray = None
+    messages: dict = field(default_factory=dict)
+
+    @property
+    def ok(self) -> np.ndarray:
+        """True where the point's forces were computed (status 0)."""
+        return np.asarray(self.status) == _OK
 
     def __iter__(self):
         yield self.P_fc
@@ -708,8 +818,10 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
     """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
     unloading), vectorised over mu and broadcast with alpha.
 
-    One Fortran call (``critical_sweep``, GIL released) per distinct alpha value traces
-    the branch and follows the load path for each of its mu.
+    The Fortran ``critical_sweep`` (GIL released) traces the branch and follows the load
+    path for each mu, in calls of at most 16 mu that share an alpha; Ctrl-C
+    (KeyboardInterrupt) takes effect between two calls. A point that fails never stops
+    the others.
 
     Parameters
     ----------
@@ -720,24 +832,31 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
     mu : array_like
         Transition parameter, mu >= 0; broadcast with `alpha`.
     errors : {"raise", "nan"}, optional
-        "raise" (default): raise on the first failure. "nan": NaN (mechanism -1) where
-        a point fails, nothing raised (a failing alpha group is then redone point by
-        point to isolate the failure).
+        "raise" (default): raise at the first point that fails (an invalid alpha or mu
+        before any work). "nan": compute every point; where one fails (or is invalid),
+        P_fc and P_pf are NaN, the mechanisms -1, and ``status`` and ``messages`` say
+        why; nothing is raised for a point.
 
     Returns
     -------
     CriticalForces
-        ``P_fc``, ``P_pf`` (unpack as ``P_fc, P_pf = critical_forces(...)``) and the
-        mechanism codes ``fc_mechanism``, ``pf_mechanism``, arrays of the broadcast
-        shape (numpy scalars when alpha and mu are scalars). JKR: P_pf = -inf.
+        ``P_fc``, ``P_pf`` (unpack as ``P_fc, P_pf = critical_forces(...)``), the
+        mechanism codes ``fc_mechanism``, ``pf_mechanism`` and the library status
+        ``status`` (0 where the point succeeded), arrays of the broadcast shape (numpy
+        scalars when alpha and mu are scalars); ``messages`` maps the index of each failed
+        point to the library's message. JKR: P_pf = -inf.
 
     Raises
     ------
     InvalidArgumentError
-        Unknown model, alpha <= 0, mu < 0, NaN or infinite values (the message gives the
-        index of the first bad point).
+        Unknown model; (errors="raise") alpha outside [1e-12, 1e12], mu outside 0 or
+        [1e-100, 1e100], NaN or infinite values (the
+        message gives the index of the first bad point).
+    InvalidTypeError
+        alpha or mu is None, complex, a string or a masked array with masked values.
     ConvergenceError
-        A branch could not be traced.
+        (errors="raise") A point's branch or load path could not be computed; the
+        message gives its index, alpha and mu.
 
     Examples
     --------
@@ -751,37 +870,70 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
     alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
     shape = mu_b.shape
     alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
-    p_fc = np.full(mu_f.size, np.nan)
-    p_pf = np.full(mu_f.size, np.nan)
-    fc_m = np.full(mu_f.size, -1, dtype=np.int32)
-    pf_m = np.full(mu_f.size, -1, dtype=np.int32)
-    if mu_f.size:
+    out = (np.full(mu_f.size, np.nan), np.full(mu_f.size, np.nan),
+           np.full(mu_f.size, -1, dtype=np.int32), np.full(mu_f.size, -1, dtype=np.int32),
+           np.zeros(mu_f.size, dtype=np.int32))
+    messages = {}
+    if mu_f.size == 1:
+        _sweep_chunk(code, float(alpha_f[0]), mu_f, np.zeros(1, dtype=np.intp), out,
+                     messages, errors, shape)
+    elif mu_f.size:
         values, inverse = np.unique(alpha_f, return_inverse=True)
+        if errors == "raise" and (values.size > 1 or mu_f.size > _CHUNK_SWEEP):
+            _check_sweep_arguments(code, alpha_f, mu_f, shape)   # all before any work
         for k, value in enumerate(values):
             idx = np.flatnonzero(inverse.reshape(-1) == k)
-            _sweep_group(code, float(value), mu_f, idx, (p_fc, p_pf, fc_m, pf_m), errors,
-                         shape)
+            for sl in _chunks(idx.size, _CHUNK_SWEEP):   # Ctrl-C is seen between chunks
+                _sweep_chunk(code, float(value), mu_f, idx[sl], out, messages, errors, shape)
+    p_fc, p_pf, fc_m, pf_m, status = out
     return CriticalForces(_shaped(p_fc, shape), _shaped(p_pf, shape), _shaped(fc_m, shape),
-                          _shaped(pf_m, shape))
+                          _shaped(pf_m, shape), _shaped(status, shape), messages)
 
 
-def _sweep_group(code, alpha, mu_f, idx, out, errors, shape):
-    """One facade call for the points `idx` that share `alpha`; on failure raise, or
-    (errors="nan") redo the group point by point and leave NaN where a point fails."""
-    p_fc, p_pf, fc_m, pf_m = out
-    fc, pf, fm, pm, ifail, status, message = _f.fa_critical_sweep(
+def _check_sweep_arguments(code, alpha_f, mu_f, shape):
+    """InvalidArgumentError naming the first bad alpha or mu, before any work."""
+    with np.errstate(invalid="ignore"):
+        bad_alpha = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX))
+        bad_mu = ~((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX)))
+    for bad in (bad_alpha, bad_mu):
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            *_, status, message = _f.fa_critical_sweep(code, float(alpha_f[i]),
+                                                       np.array([mu_f[i]]))
+            if status != _OK:
+                _raise(status, message, _where(i + 1, shape))
+
+
+def _sweep_chunk(code, alpha, mu_f, idx, out, messages, errors, shape):
+    """One facade call for the points `idx` (one alpha); failed points keep NaN, -1 and
+    their status; errors="raise" raises at the first one."""
+    p_fc, p_pf, fc_m, pf_m, status_out = out
+    fc, pf, fm, pm, rs, ifail, status, message = _f.fa_critical_sweep(
         code, alpha, np.ascontiguousarray(mu_f[idx]))
+    if status == _INVALID_ARGUMENT and (rs == _INVALID_ARGUMENT).all():
+        # an argument was refused and nothing computed
+        if errors == "raise":
+            where = idx[ifail - 1] if ifail > 0 else idx[0]
+            _raise(status, message, _where(int(where) + 1, shape))
+        if idx.size > 1:                                 # isolate the bad points
+            for i in idx:
+                _sweep_chunk(code, alpha, mu_f, np.array([i]), out, messages, errors, shape)
+            return
+    p_fc[idx], p_pf[idx], fc_m[idx], pf_m[idx], status_out[idx] = fc, pf, fm, pm, rs
     if status == _OK:
-        p_fc[idx], p_pf[idx], fc_m[idx], pf_m[idx] = fc, pf, fm, pm
         return
-    if errors == "raise":
-        where = idx[ifail - 1] if ifail > 0 else idx[0]
-        _raise(status, message, _where(int(where) + 1, shape) or
-               ("" if ifail > 0 else f"alpha = {alpha!r}"))
-    if idx.size == 1:
-        return
-    for i in idx:
-        _sweep_group(code, alpha, mu_f, np.array([i]), out, errors, shape)
+    for j in np.flatnonzero(rs != _OK):
+        i = int(idx[j])
+        where = _where(i + 1, shape)
+        # the sweep's message is about its first failing row: ask this row's own
+        # (as load_path gives it; failures are rare, so the extra call costs little)
+        text = _text(_f.fa_load_path(_PATH_CAPACITY, code, alpha, float(mu_f[i]))[-1])
+        text = text or _text(_f.fa_status_text(int(rs[j])))
+        key = tuple(int(v) for v in np.unravel_index(i, shape)) if shape else ()
+        messages[key] = text
+        if errors == "raise":
+            _raise(int(rs[j]), text, f"{where + ', ' if where else ''}alpha = {alpha!r}, "
+                   f"mu = {float(mu_f[i])!r}")
 
 
 @dataclass(frozen=True)
@@ -833,6 +985,8 @@ class Params:
     ------
     InvalidArgumentError
         If alpha <= 0, mu < 0, or either is NaN or infinite.
+    InvalidTypeError
+        If alpha or mu is not a real scalar (None, complex, a string; also a TypeError).
     """
 
     alpha: float
@@ -842,8 +996,8 @@ class Params:
     dcod: float = field(init=False)
 
     def __post_init__(self):
-        alpha = float(_float_array(self.alpha, "alpha"))
-        mu = float(_float_array(self.mu, "mu"))
+        alpha = _scalar(self.alpha, "alpha")
+        mu = _scalar(self.mu, "mu")
         sigma0, dcod, status, message = _f.fa_params(alpha, mu)
         if status != _OK:
             _raise(status, message)
@@ -893,6 +1047,9 @@ class Params:
         ------
         InvalidArgumentError
             Missing or conflicting moduli, or any input out of range.
+        InvalidTypeError
+            An input that is not a real scalar (None for a required one, complex, a
+            string; also a TypeError); the message names it.
 
         Examples
         --------
@@ -901,20 +1058,27 @@ class Params:
         >>> round(p.alpha, 6)
         0.31831
         """
-        moduli = (E1, nu1, E2, nu2)
+        moduli = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
         if Estar is None:
-            if any(v is None for v in moduli):
-                raise InvalidArgumentError("give Estar, or all of E1, nu1, E2 and nu2", 1)
-            estar, status, message = _f.fa_reduced_modulus(*map(float, moduli))
+            missing = [k for k, v in moduli.items() if v is None]
+            if missing:
+                raise InvalidArgumentError(
+                    f"give Estar, or all of E1, nu1, E2 and nu2 (missing: "
+                    f"{', '.join(missing)})", 1)
+            estar, status, message = _f.fa_reduced_modulus(
+                *(_scalar(v, k) for k, v in moduli.items()))
             if status != _OK:
                 _raise(status, message)
         else:
-            if any(v is not None for v in moduli):
-                raise InvalidArgumentError("give Estar or E1, nu1, E2, nu2, not both", 1)
-            estar = Estar
+            given = [k for k, v in moduli.items() if v is not None]
+            if given:
+                raise InvalidArgumentError(
+                    f"give Estar or E1, nu1, E2, nu2, not both (got Estar and "
+                    f"{', '.join(given)})", 1)
+            estar = _scalar(Estar, "Estar")
         out = _f.fa_dimensional(
-            float(estar), float(period), float(amplitude), float(work_of_adhesion),
-            float(peak_stress),
+            float(estar), _scalar(period, "period"), _scalar(amplitude, "amplitude"),
+            _scalar(work_of_adhesion, "work_of_adhesion"), _scalar(peak_stress, "peak_stress"),
         )
         alpha, mu, sigma0, dcod, pressure, force, length, radius, status, message = out
         if status != _OK:

@@ -704,6 +704,65 @@ static void test_critical_sweep(void) {
    CHECK(wa_critical_sweep(8, 0.3, 3, mu, fc, pf, fm, pm) == WA_INVALID_ARGUMENT, "model 8");
 }
 
+/* A sweep never loses work (issue 9): each row equals wa_critical_forces at its mu, a
+   row that fails there holds NaN, -1 and that status in row_status, every other row is
+   written, and the sweep returns the status of the first failing row. The MD mu values
+   surround a mechanism change at alpha = 1 where the tracer failed (issue 9 item 4); the
+   checks hold whether or not a row fails. */
+static void test_sweep_keeps_rows(void) {
+   double mu[6] = {0.5, 0.7936921, 0.79369860901363931, 0.7937005, 0.9, 2.0};
+   double fc[6], pf[6];
+   int fm[6], pm[6], rs[6], st, i, first = WA_OK, n_failed = 0;
+   char msg[256];
+   st = wa_critical_sweep_status(WA_MODEL_MD, 1.0, 6, mu, fc, pf, fm, pm, rs, msg,
+                                 sizeof msg);
+   for (i = 0; i < 6; i++) {
+      double f1, p1;
+      int s1 = wa_critical_forces(WA_MODEL_MD, 1.0, mu[i], &f1, &p1);
+      CHECK(rs[i] == s1, "md row %d: row_status %d, wa_critical_forces %d", i, rs[i], s1);
+      if (s1 == WA_OK) {
+         CHECK(fc[i] == f1 && pf[i] == p1 && fm[i] >= 0 && pm[i] >= 0,
+               "md row %d (mu %.17g) written", i, mu[i]);
+      } else {
+         CHECK(isnan(fc[i]) && isnan(pf[i]) && fm[i] == -1 && pm[i] == -1,
+               "md row %d (mu %.17g) failed: NaN and -1", i, mu[i]);
+         if (first == WA_OK) first = s1;
+         n_failed++;
+      }
+   }
+   CHECK(st == first, "sweep returns the first row's failure: %d vs %d", st, first);
+   if (n_failed > 0)
+      CHECK(strstr(msg, "rows failed") != NULL, "failing sweep message: '%s'", msg);
+   else
+      CHECK(msg[0] == '\0', "clean sweep: empty message '%s'", msg);
+   printf("  md alpha 1 sweep around the mechanism change: %d of 6 rows failed\n", n_failed);
+
+   /* every row ok: row_status all WA_OK, same numbers as wa_critical_sweep */
+   {
+      double mu2[3] = {0.1, 1.0, 5.0}, fc2[3], pf2[3];
+      int fm2[3], pm2[3];
+      st = wa_critical_sweep_status(WA_MODEL_DW, 0.3, 3, mu2, fc, pf, fm, pm, rs, NULL, 0);
+      wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu2, fc2, pf2, fm2, pm2);
+      CHECK(st == WA_OK && rs[0] == WA_OK && rs[1] == WA_OK && rs[2] == WA_OK &&
+               fc[2] == fc2[2] && pf[1] == pf2[1] && fm[2] == fm2[2],
+            "dw sweep_status: st %d rows %d %d %d", st, rs[0], rs[1], rs[2]);
+      mu2[1] = NAN;
+      st = wa_critical_sweep_status(WA_MODEL_DW, 0.3, 3, mu2, fc, pf, fm, pm, rs, msg,
+                                    sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && rs[0] == WA_INVALID_ARGUMENT &&
+               rs[2] == WA_INVALID_ARGUMENT && isnan(fc[0]) && strstr(msg, "mu[1]"),
+            "NaN mu[1]: every row invalid, st %d msg '%s'", st, msg);
+      mu2[1] = 1.0;
+      CHECK(wa_critical_sweep_status(WA_MODEL_DW, 0.3, 3, mu2, fc, pf, fm, pm, NULL, msg,
+                                     sizeof msg) == WA_INVALID_ARGUMENT &&
+               strstr(msg, "row_status"),
+            "NULL row_status: '%s'", msg);
+      CHECK(wa_critical_sweep_status(WA_MODEL_DW, 0.3, 0, NULL, NULL, NULL, NULL, NULL, NULL,
+                                     NULL, 0) == WA_OK,
+            "empty sweep_status");
+   }
+}
+
 /* 4 threads tracing branches and computing critical forces at once get the serial
    results bit for bit. */
 #define N_BRANCH_JOBS 6
@@ -796,6 +855,7 @@ int main(void) {
    test_critical_invalid();
    test_load_path();
    test_critical_sweep();
+   test_sweep_keeps_rows();
    test_branch_threads();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;

@@ -6,7 +6,9 @@ import csv
 import io
 import math
 import os
+import signal
 import subprocess
+import time
 from pathlib import Path
 
 import pytest
@@ -127,3 +129,274 @@ def test_dimensional_input(cli):
               "--work-of-adhesion", "0.05", "--peak-stress", "1e7", "--a-star", "0.2",
               "--format", "csv")
     assert len(rows(res.stdout)) >= 1
+
+
+# --- issue 9: robustness of the driver ---------------------------------------------------
+
+def files_in(path):
+    return sorted(p.name for p in path.iterdir())
+
+
+@pytest.mark.parametrize("args", [
+    ["point", "--a-star", "0.2"],
+    ["branch"],
+    ["critical", "--mu", "0.5,1"],
+    ["--help"],
+])
+def test_write_error_on_stdout_exits_1(cli, args):
+    with open("/dev/full", "w") as full:
+        res = subprocess.run([cli, *args], stdout=full, stderr=subprocess.PIPE, text=True)
+    assert res.returncode == 1
+    assert "cannot write" in res.stderr and "standard output" in res.stderr
+
+
+def test_write_error_on_output_file_exits_1(cli):
+    res = run(cli, "point", "--a-star", "0.2", "--output", "/dev/full", check=False)
+    assert res.returncode == 1
+    assert "/dev/full" in res.stderr and "No space left" in res.stderr
+
+
+def test_output_to_a_device_is_written_directly(cli):
+    run(cli, "point", "--a-star", "0.2", "--output", "/dev/null")
+
+
+def test_failed_run_keeps_existing_output(cli, tmp_path):
+    # the a* range is checked after --output is opened: the run fails with the
+    # temporary file already created
+    out = tmp_path / "t.csv"
+    out.write_text("precious\n")
+    res = run(cli, "point", "--a-star", "0.7", "--output", str(out), check=False)
+    assert res.returncode == 2
+    assert out.read_text() == "precious\n"
+    assert files_in(tmp_path) == ["t.csv"]
+
+
+def test_failed_run_leaves_no_file(cli, tmp_path):
+    out = tmp_path / "new.csv"
+    res = run(cli, "point", "--a-star", "0.7", "--output", str(out), check=False)
+    assert res.returncode == 2
+    assert files_in(tmp_path) == []
+
+
+def test_numerical_failure_keeps_existing_output(cli, tmp_path):
+    # DW at mu = 0 failed in the tracer (issue 9 item 3); whichever way it ends, the
+    # file holds either the old text or a complete table, and no temporary file remains
+    out = tmp_path / "t.csv"
+    out.write_text("precious\n")
+    res = run(cli, "branch", "--model", "dw", "--mu", "0", "--format", "csv", "--output",
+              str(out), check=False)
+    assert files_in(tmp_path) == ["t.csv"]
+    if res.returncode == 0:
+        assert rows(out.read_text())[-1]["event"] == "8"
+    else:
+        assert res.returncode == 1 and "no table written" in res.stderr
+        assert out.read_text() == "precious\n"
+
+
+def test_output_replaces_file_keeps_mode_and_symlink(cli, tmp_path):
+    target = tmp_path / "t.csv"
+    target.write_text("old\n")
+    target.chmod(0o640)
+    link = tmp_path / "link.csv"
+    link.symlink_to(target.name)
+    run(cli, "point", "--a-star", "0.2", "--format", "csv", "--output", str(link))
+    assert link.is_symlink()
+    assert rows(target.read_text())[0]["a_star"].startswith("2.0")
+    assert target.stat().st_mode & 0o777 == 0o640
+    assert files_in(tmp_path) == ["link.csv", "t.csv"]
+
+
+def test_output_in_missing_directory_is_a_usage_error(cli, tmp_path):
+    res = run(cli, "point", "--a-star", "0.2", "--output", str(tmp_path / "no" / "t.csv"),
+              check=False)
+    assert res.returncode == 2
+    assert "--output" in res.stderr
+
+
+@pytest.mark.parametrize("option, value, subcommand", [
+    ("--alpha", "1+1", "point"),
+    ("--a-star", "0.1-1", "point"),
+    ("--alpha", "1e", "point"),
+    ("--alpha", "nan", "point"),
+    ("--mu", "inf", "point"),
+    ("--mu", "", "point"),
+    ("--mu", " 1", "point"),
+    ("--alpha", "0x10", "point"),
+    ("--alpha", "1d0", "point"),
+    ("--alpha", "1e400", "point"),
+    ("--a-star", "0.1,,0.2", "point"),
+    ("--a-star", "0.1,", "point"),
+    ("--Estar", "1e9Pa", "point"),
+    ("--alpha", "0.3,abc", "critical"),
+])
+def test_strict_number_parsing(cli, option, value, subcommand):
+    args = [subcommand, option, value]
+    if subcommand == "point" and option != "--a-star":
+        args += ["--a-star", "0.2"]
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2, res.stdout
+    assert option in res.stderr
+    assert res.stdout == ""
+
+
+@pytest.mark.parametrize("option, range_text", [
+    ("--alpha", "[1e-12, 1e12]"), ("--mu", "0 or [1e-100, 1e100]"), ("--a-star", "[0, 1/2]"),
+    ("--nu1", "(-1, 1/2]"), ("--period", "(0, inf) m"),
+])
+def test_parse_error_names_the_valid_range(cli, option, range_text):
+    res = run(cli, "point", option, "x", check=False)
+    assert res.returncode == 2
+    assert option in res.stderr and range_text in res.stderr
+
+
+@pytest.mark.parametrize("value", ["0.3", "+0.3", ".3", "3e-1", "3.E-1", "0.30"])
+def test_plain_numbers_are_accepted(cli, value):
+    res = run(cli, "point", "--alpha", value, "--a-star", "0.2", "--format", "csv")
+    assert len(rows(res.stdout)) >= 1
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["point", "--alpha", "1", "--alpha", "2", "--a-star", "0.1"], "--alpha is given twice"),
+    (["point", "--a-star", "0.1", "--a-star", "0.2"], "--a-star is given twice"),
+    (["point", "--model", "dw", "--model", "md", "--a-star", "0.1"], "--model is given twice"),
+    (["critical", "--mu", "1", "--mu-range", "1:2:3"], "--mu and --mu-range"),
+    (["point", "--mu-range", "1:2:1", "--a-star", "0.1"], "--mu-range"),
+    (["path", "--a-star", "0.1"], "--a-star"),
+    (["critical", "--a-star", "0.1"], "--a-star"),
+    (["point", "--Estar", "1e9", "--a-star", "0.1"], "incomplete"),
+    (["point", "--Estar", "1e9", "--E1", "1e9", "--nu1", "0.3", "--E2", "1e9", "--nu2", "0.3",
+      "--period", "1e-5", "--amplitude", "1e-7", "--work-of-adhesion", "0.05",
+      "--peak-stress", "1e7", "--a-star", "0.1"], "--Estar cannot be combined"),
+    (["point", "--E1", "1e9", "--nu1", "0.3", "--period", "1e-5", "--amplitude", "1e-7",
+      "--work-of-adhesion", "0.05", "--peak-stress", "1e7", "--a-star", "0.1"], "--E2 --nu2"),
+    (["point", "--alpha", "0.3", "--Estar", "1e9", "--period", "1e-5", "--amplitude", "1e-7",
+      "--work-of-adhesion", "0.05", "--peak-stress", "1e7", "--a-star", "0.1"], "--alpha"),
+    (["critical", "--mu-range", "0.1:1:10", "--Estar", "1e9", "--period", "1e-5",
+      "--amplitude", "1e-7", "--work-of-adhesion", "0.05", "--peak-stress", "1e7"],
+     "--mu-range"),
+    (["critical", "--mu-range", "1:2:3.5"], "N"),
+    (["critical", "--mu-range", "1:2:3:lin"], "log"),
+    (["critical", "--mu-range", "0:2:3:log"], "LO must be > 0"),
+    (["point", "--a-star", "0.1", "--output", ""], "--output"),
+])
+def test_contradictory_or_repeated_options_exit_2(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
+    assert needle in res.stderr
+    assert res.stdout == ""
+
+
+SI = ["--period", "1e-5", "--amplitude", "1e-7", "--work-of-adhesion", "0.05",
+      "--peak-stress", "1e7"]
+
+
+def test_si_moduli_and_estar_agree(cli):
+    nu = 0.3
+    estar = 1.0 / (2 * (1 - nu * nu) / 2e9)            # two equal bodies, E = 2 GPa
+    a = run(cli, "point", "--E1", "2e9", "--nu1", "0.3", "--E2", "2e9", "--nu2", "0.3", *SI,
+            "--a-star", "0.2").stdout
+    b = run(cli, "point", "--Estar", repr(estar), *SI, "--a-star", "0.2").stdout
+    header = [l for l in a.splitlines() if l.startswith("# alpha")]
+    assert header == [l for l in b.splitlines() if l.startswith("# alpha")]
+
+
+def test_critical_takes_si_input(cli):
+    point = run(cli, "point", "--Estar", "1e9", *SI, "--a-star", "0.2").stdout
+    alpha_mu = next(l for l in point.splitlines() if l.startswith("# alpha")).split()
+    res = run(cli, "critical", "--Estar", "1e9", *SI, "--format", "csv")
+    table = rows(res.stdout)
+    assert len(table) == 1
+    assert float(table[0]["alpha"]) == float(alpha_mu[3])
+    assert float(table[0]["mu"]) == float(alpha_mu[6])
+
+
+def test_messages_print_three_digit_exponents(cli):
+    res = run(cli, "point", "--alpha", "-1.5e300", "--a-star", "0.2", check=False)
+    assert res.returncode == 2 and "E+300" in res.stderr
+    res = run(cli, "point", "--a-star", "1.7e308", check=False)
+    assert res.returncode == 2 and "E+308" in res.stderr
+
+
+def test_point_many_values_in_order(cli):
+    # point keeps its rows in a doubling array (linear time; issue 9 measured
+    # 10k/20k/40k values); 20000 a* give 20000 rows in the order given
+    values = [".1", ".2", ".3", ".4"] * 5000
+    res = run(cli, "point", "--model", "westergaard", "--a-star", ",".join(values),
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert len(table) == 20000
+    assert [float(r["a_star"]) for r in table[:5]] == [0.1, 0.2, 0.3, 0.4, 0.1]
+
+
+def test_critical_lists_every_row_across_mechanism_changes(cli):
+    # issue 9 item 4: the mechanism bisection landed in failure windows and the whole
+    # table was lost; now it is always written
+    res = run(cli, "critical", "--model", "md", "--alpha", "1", "--mu-range", "0.1:5:20",
+              check=False)
+    data = [l.split() for l in res.stdout.splitlines() if not l.startswith("#")]
+    assert len(data) == 20
+    notes = [l for l in res.stdout.splitlines() if l.startswith("# alpha")]
+    assert any("P_pf" in l for l in notes) and any("P_fc" in l for l in notes)
+    assert res.returncode == (1 if any("nan" in r[2].lower() for r in data) else 0)
+
+
+def test_critical_mechanism_bisection_from_mu_zero(cli):
+    # a linear range from 0: the bisection starts arithmetic (it cannot be geometric)
+    res = subprocess.run([cli, "critical", "--model", "md", "--mu-range", "0:1:3"],
+                         capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stderr
+    assert any("P_pf: gradual -> jump case 1" in l for l in res.stdout.splitlines())
+
+
+@pytest.mark.parametrize("model, alpha, mus, bad", [
+    # MD tracer failure window at a mechanism change (issue 9 item 4)
+    ("md", "1", ["0.5", "0.79369860901363931", "2"], "7.9369860901363931E-001"),
+    # DW at mu = 0 (issue 9 item 3)
+    ("dw", "0.3", ["1", "0", "5"], "0.0000000000000000E+000"),
+])
+def test_critical_failing_row_is_written_with_nan(cli, model, alpha, mus, bad):
+    # whether or not the row still fails, the table has every row: a failing one is NaN,
+    # named on stderr with its reason, and the exit status is 1; the others are intact
+    res = run(cli, "critical", "--model", model, "--alpha", alpha, "--mu", ",".join(mus),
+              "--format", "csv", check=False)
+    table = rows(res.stdout)
+    assert [float(r["mu"]) for r in table] == [float(m) for m in mus]
+    assert math.isfinite(float(table[0]["P_fc"])) and math.isfinite(float(table[2]["P_pf"]))
+    failed = [r for r in table if math.isnan(float(r["P_fc"]))]
+    if failed:
+        assert res.returncode == 1
+        assert f"mu = {bad}" in res.stderr and "row written with NaN forces" in res.stderr
+        assert "1 of 3 rows failed" in res.stderr
+        assert [r["mu"] for r in failed] == [table[1]["mu"]]
+    else:
+        assert res.returncode == 0 and res.stderr == ""
+
+
+def test_critical_failure_note_in_table_header(cli):
+    res = run(cli, "critical", "--model", "dw", "--mu", "0,1", check=False)
+    data = [l for l in res.stdout.splitlines() if not l.startswith("#")]
+    assert len(data) == 2
+    if res.returncode == 1:
+        assert "# 1 of 2 rows failed" in res.stdout
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_interrupted_run_removes_its_temporary_file(cli, tmp_path, sig):
+    out = tmp_path / "t.txt"
+    out.write_text("precious\n")
+    proc = subprocess.Popen([cli, "critical", "--model", "md", "--mu-range",
+                             "0.01:10:2000:log", "--output", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        for _ in range(200):                      # the temporary file is made at start
+            if len(files_in(tmp_path)) == 2:
+                break
+            time.sleep(0.05)
+        assert len(files_in(tmp_path)) == 2
+        proc.send_signal(sig)
+        proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 128 + sig
+    assert files_in(tmp_path) == ["t.txt"]
+    assert out.read_text() == "precious\n"

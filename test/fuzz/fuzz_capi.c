@@ -857,9 +857,28 @@ static int run_sweep(const call_t *c, int msg) {
 }
 
 static void check_sweep(const call_t *c, int st, int invalid) {
-   int n = c->n_mu > 0 ? c->n_mu : 0, k;
+   int n = c->n_mu > 0 ? c->n_mu : 0, k, n_failed = 0;
    unsigned nm = c->null_mask;
    check_status(c, st, 0x2F, invalid);
+   if (st != WA_OK && st != WA_INVALID_ARGUMENT && !nm) {
+      /* a numerical failure keeps the good rows (issue 9): each row is either a failed one
+         (NaN NaN -1 -1) or well formed, and at least one failed */
+      for (k = 0; k < n; k++) {
+         double fc = D(1)[k], pf = D(2)[k];
+         int fm = I(0)[k], pm = I(1)[k];
+         if (isnan(fc) && isnan(pf) && fm == -1 && pm == -1) {
+            n_failed++;
+         } else if (!ok_forces(c->model, fc, pf) || fm < WA_MECHANISM_GRADUAL ||
+                    fm > WA_MECHANISM_SNAP || pm < WA_MECHANISM_GRADUAL ||
+                    pm > WA_MECHANISM_JUMP_CASE2) {
+            violation(c, K_FAIL_OUTPUT, "status %d, row %d: %.17g %.17g %d %d (want a good row "
+                      "or NaN NaN -1 -1)", st, k, fc, pf, fm, pm);
+            return;
+         }
+      }
+      if (n_failed == 0) violation(c, K_FAIL_OUTPUT, "status %d but no failed row", st);
+      return;
+   }
    for (k = 0; k < n; k++)
       if (memcmp(&D(0)[k], &c->mus[k], sizeof(double)) != 0)
          violation(c, K_OVERRUN, "the input mu[%d] was modified", k);

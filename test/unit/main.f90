@@ -9,6 +9,7 @@ program tester
    use test_md, only: collect_md
    use test_reference, only: collect_reference
    use test_branch, only: collect_branch
+   use test_sweep, only: collect_sweep
    use test_robustness, only: collect_robustness
    implicit none
    type(unittest_type), allocatable :: tests(:)
@@ -42,6 +43,9 @@ program tester
    end if
    if (wanted("robustness")) then
       call collect_robustness(tests); call run_suite("robustness", tests, npass, nfail, only)
+   end if
+   if (wanted("sweep")) then
+      call collect_sweep(tests); call run_suite("sweep", tests, npass, nfail, only)
    end if
    if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
