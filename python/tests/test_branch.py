@@ -24,7 +24,7 @@ def test_shapes_and_types(model):
     assert np.all((b.a_star > 0) & (b.a_star <= 0.5))
     assert np.all((b.c_star >= b.a_star) & (b.c_star <= 0.5))
     assert set(np.unique(b.zone_case)) <= {1, 2, 3}
-    assert set(np.unique(b.event)) <= {0, 1, 2, 8}
+    assert set(np.unique(b.event)) <= {0, 1, 2, 8, 9}
     assert b.event[0] == b.event[-1] == 8
     np.testing.assert_array_equal(b.b_star, b.a_star + 0.4 * (b.c_star - b.a_star))
     assert not np.any(b.stable[b.event == 1]), "folds are not stable points"

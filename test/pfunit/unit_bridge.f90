@@ -11,6 +11,7 @@ module unit_bridge
    use test_reference, only: collect_reference
    use test_branch, only: collect_branch
    use test_robustness, only: collect_robustness
+   use test_sweep, only: collect_sweep
    implicit none
    private
 
@@ -31,6 +32,7 @@ contains
       case ("reference"); call collect_reference(tests)
       case ("branch"); call collect_branch(tests)
       case ("robustness"); call collect_robustness(tests)
+      case ("sweep"); call collect_sweep(tests)
       case default; allocate (tests(0))
       end select
    end subroutine collect
