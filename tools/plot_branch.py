@@ -48,10 +48,10 @@ def main():
             ax.plot(a[start:i + 1], p[start:i + 1], linestyle="-" if stable else (0, (4, 3)),
                     color="tab:purple" if case2 else "tab:red", lw=1.6)
             start = i
+    marker = {"1": "o", "2": "s", "9": "^"}         # fold, case switch, a*-turn
     for r in branch:
-        if r["event"] in ("1", "2"):
-            ax.plot(float(r["a_star"]), float(r["P_star"]), "o" if r["event"] == "1" else "s",
-                    color="k", ms=4)
+        if r["event"] in marker:
+            ax.plot(float(r["a_star"]), float(r["P_star"]), marker[r["event"]], color="k", ms=4)
     pts = [(int(r["stage"]), int(r["event"]), float(r["a_star"]), float(r["P_star"])) for r in path]
     for (s0, e0, a0, p0), (s1, e1, a1, p1) in zip(pts, pts[1:]):
         if s0 == s1 and e0 == 3 and abs(p0) != float("inf"):
@@ -63,7 +63,7 @@ def main():
     ax.set_ylabel("P*")
     ax.set_title(f"{opts.model.upper()}  alpha = {opts.alpha}, mu = {opts.mu}: "
                  "branch (solid stable, dashed unstable; purple c* = 1/2),\n"
-                 "folds (o), case switches (s), loading (blue) and unloading (green) jumps",
+                 "folds (o), case switches (s), a*-turns (^), loading (blue) and unloading (green) jumps",
                  fontsize=8)
     ax.set_xlim(0, 0.5)
     fig.tight_layout()
@@ -71,9 +71,9 @@ def main():
 
 
 def r_stable(branch, i):
-    # a segment is stable where P* rises with a*
-    return (float(branch[i + 1]["P_star"]) - float(branch[i]["P_star"])) * \
-        (float(branch[i + 1]["a_star"]) - float(branch[i]["a_star"])) > 0
+    # the library's flag (stability changes only at extrema of P*, not at a*-turns): a
+    # segment is stable where one of its ends is (the other may be the fold that ends it)
+    return branch[i]["stable"] == "1" or branch[i + 1]["stable"] == "1"
 
 
 if __name__ == "__main__":
