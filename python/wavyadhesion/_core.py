@@ -528,7 +528,8 @@ class Branch:
     zone_case : numpy.ndarray of int
         1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact.
     stable : numpy.ndarray of bool
-        True where dP*/da* > 0 (stable under load control); False at folds.
+        True where the state is stable under load control (case 2: dP*/da* > 0;
+        case 1: the flag changes only at extrema of P*, not at a*-turns); False at folds.
     event : numpy.ndarray of int
         Event code of each point (:data:`EVENTS`; 0 for ordinary points).
     extremum : numpy.ndarray of int
