@@ -860,8 +860,8 @@ static void check_sweep(const call_t *c, int st, int invalid) {
    int n = c->n_mu > 0 ? c->n_mu : 0, k, n_failed = 0;
    unsigned nm = c->null_mask;
    check_status(c, st, 0x2F, invalid);
-   if (st != WA_OK && st != WA_INVALID_ARGUMENT && (nm & 0x1Eu)) return;   /* rows unknown */
-   if (st != WA_OK && st != WA_INVALID_ARGUMENT && !nm) {
+   if (st != WA_OK && st != WA_INVALID_ARGUMENT) {
+      if (nm & 0x1Eu) return;                   /* an output array is NULL: rows unknown */
       /* a numerical failure keeps the good rows (issue 9): each row is either a failed one
          (NaN NaN -1 -1) or well formed, and at least one failed */
       for (k = 0; k < n; k++) {
