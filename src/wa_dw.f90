@@ -15,6 +15,7 @@ module wa_dw
    use wa_kernels, only: wavy_gap_shape
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p
+   use wa_separation, only: dw_state_gbar
    implicit none
    private
 
@@ -47,16 +48,19 @@ contains
       geo = geometry(a_star)
       if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
          state = special_state(params, geo)
+         state%gbar = dw_state_gbar(params, state)
          return
       end if
       g_top = residual(params, geo, 0.0_wp)
       if (g_top <= 0.0_wp) then          ! (2.28b) holds: no case-1 root
          state = case2_state(params, geo)
+         state%gbar = dw_state_gbar(params, state)
          return
       end if
       call solve_case1(params, geo, g_top, s, status, errmsg)
       if (status /= wa_ok) return
       state = case1_state(params, geo, s)
+      state%gbar = dw_state_gbar(params, state)
    end subroutine dw_equilibrium
 
    !> Every DW equilibrium at a*: case-1 roots by increasing c* (each sign change of
@@ -100,6 +104,8 @@ contains
          end if
       end if
       states(1:min(n_roots, size(states))) = found(1:min(n_roots, size(states)))
+      states(1:min(n_roots, size(states)))%gbar = dw_state_gbar(params, &
+         states(1:min(n_roots, size(states))))
       if (n_roots > size(states)) then
          call set_error(wa_capacity_too_small, "states: capacity too small for all roots", &
             status, errmsg)
