@@ -15,7 +15,7 @@ module wa_dw
    use wa_kernels, only: wavy_gap_shape
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p
-   use wa_separation, only: dw_state_gbar
+   use wa_separation, only: dw_mean_gap
    implicit none
    private
 
@@ -48,19 +48,16 @@ contains
       geo = geometry(a_star)
       if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
          state = special_state(params, geo)
-         state%gbar = dw_state_gbar(params, state)
          return
       end if
       g_top = residual(params, geo, 0.0_wp)
       if (g_top <= 0.0_wp) then          ! (2.28b) holds: no case-1 root
          state = case2_state(params, geo)
-         state%gbar = dw_state_gbar(params, state)
          return
       end if
       call solve_case1(params, geo, g_top, s, status, errmsg)
       if (status /= wa_ok) return
       state = case1_state(params, geo, s)
-      state%gbar = dw_state_gbar(params, state)
    end subroutine dw_equilibrium
 
    !> Every DW equilibrium at a*: case-1 roots by increasing c* (each sign change of
@@ -104,8 +101,6 @@ contains
          end if
       end if
       states(1:min(n_roots, size(states))) = found(1:min(n_roots, size(states)))
-      states(1:min(n_roots, size(states)))%gbar = dw_state_gbar(params, &
-         states(1:min(n_roots, size(states))))
       if (n_roots > size(states)) then
          call set_error(wa_capacity_too_small, "states: capacity too small for all roots", &
             status, errmsg)
@@ -292,6 +287,7 @@ contains
       state%c_star = geo%a_star + state%gap_width
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
       state%zone_case = zone_inside
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, d2, omc2)
    end function case1_state
 
    !> Case 2: c* = 1/2, P* = A^2 - Sigma0/2   (2.28a)
@@ -304,6 +300,7 @@ contains
       state%gap_width = 0.5_wp - geo%a_star
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0
       state%zone_case = zone_whole_period
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, geo%one_minus_a2, 0.0_wp)
    end function case2_state
 
    !> a* = 1/2 (full contact at its threshold, (2.29)) and Sigma0 = 0 (Westergaard).

@@ -34,7 +34,7 @@ module wa_separation
    implicit none
    private
 
-   public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar
+   public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap
    public :: state_mean_gap, state_profile, state_traction, state_gap, check_state
    public :: md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures
    public :: md_no_contact_family
@@ -90,7 +90,7 @@ contains
          g = ieee_value(g, ieee_quiet_nan)
          return
       end if
-      g = gw_of(sin(pi*(0.5_wp - a_star))**2)
+      g = gw_of(sin(pi*a_star)**2, sin(pi*(0.5_wp - a_star))**2)
    end function westergaard_mean_gap
 
    !> JKR mean gap gbar* = 1 - A^2 + P* ln A^2, P* = A^2 - alpha sqrt(tan(pi a*)):
@@ -113,7 +113,7 @@ contains
          a = sin(pi*a_star)
          q = sin(pi*(0.5_wp - a_star))
          ! g_W(A^2) + (P* - A^2) ln A^2, with ln A^2 = log1p(-q^2)
-         g = gw_of(q*q) - alpha*sqrt(a/q)*2.0_wp*log(a)
+         g = gw_of(a*a, q*q) - alpha*sqrt(a/q)*log_a2(a, q)
       end if
    end function jkr_mean_gap
 
@@ -128,6 +128,20 @@ contains
       ctx = context_of(model_dw, params, state)
       g = dw_gbar(ctx)
    end function dw_state_gbar
+
+   !> DW mean gap from the quantities the solver has at hand (A = sin(pi a*),
+   !> q = cos(pi a*), d2 = C^2 - A^2, qc2 = cos^2(pi c*); case 2: d2 = q^2, qc2 = 0), as in
+   !> dw_state_gbar; 0 at full contact (q = 0).
+   elemental function dw_mean_gap(sigma0, a, q, d2, qc2) result(g)
+      real(wp), intent(in) :: sigma0, a, q, d2, qc2
+      real(wp) :: g, lambda
+      g = 0.0_wp
+      if (q <= 0.0_wp) return
+      g = gw_of(a*a, q*q)
+      if (d2 <= 0.0_wp .or. sigma0 == 0.0_wp) return
+      lambda = sigma0/(2.0_wp*q*sqrt(d2))
+      g = g + lambda*(d2*(-log1p(-qc2)) + a*a*y_minus_log1p(d2/(a*a)))
+   end function dw_mean_gap
 
    !> MD mean gap of a solved state (zone cases 0-3); the quadrature of
    !> int acosh(sin(pi t)/A) dt is a graded 16-point Gauss-Legendre sum.
@@ -513,14 +527,15 @@ contains
       xr = abs(x_star - anint(x_star))
    end function reduced
 
-   !> g_W(s) = 1 - s + s ln s from eps = 1 - s (accurate as s -> 1: sum eps^k/(k(k-1))).
-   elemental function gw_of(eps) result(g)
-      real(wp), intent(in) :: eps
+   !> g_W(s) = 1 - s + s ln s from s = A^2 and eps = 1 - s = q^2, both given accurately
+   !> (as s -> 1: sum eps^k/(k(k-1))).
+   elemental function gw_of(s, eps) result(g)
+      real(wp), intent(in) :: s, eps
       real(wp) :: g, term
       integer :: k
-      if (eps >= 0.5_wp) then
-         g = eps + (1.0_wp - eps)*log(1.0_wp - eps)
-         if (eps == 1.0_wp) g = 1.0_wp
+      if (eps >= 0.1_wp) then
+         g = eps
+         if (s > 0.0_wp) g = eps + s*log(s)
          return
       end if
       g = 0.0_wp
@@ -531,6 +546,38 @@ contains
          if (term < 1.0e-18_wp*g) exit
       end do
    end function gw_of
+
+   !> sin(pi (u + v)) for u, v in [0, 1/2], from 1 - u - v = (1/2 - u) + (1/2 - v) past 1/2.
+   elemental function sin_pi_sum(u, v) result(y)
+      real(wp), intent(in) :: u, v
+      real(wp) :: y
+      if (u + v <= 0.5_wp) then
+         y = sin(pi*(u + v))
+      else
+         y = sin(pi*((0.5_wp - u) + (0.5_wp - v)))
+      end if
+   end function sin_pi_sum
+
+   !> c* - x*, with c* = a* + (c* - a*) from the accurate zone width (c_star itself may be
+   !> off by half an ulp; the gap slope is log-singular at c*).
+   elemental function c_minus(ctx, xr) result(d)
+      type(separation_context), intent(in) :: ctx
+      real(wp), intent(in) :: xr
+      real(wp) :: d
+      d = (ctx%a_star - xr) + ctx%width
+      if (ctx%c_star == 0.5_wp) d = 0.5_wp - xr
+   end function c_minus
+
+   !> ln A^2 from A = sin(pi a*) and q = cos(pi a*): 2 ln A, or ln(1 - q^2) near A = 1.
+   elemental function log_a2(a, q) result(l)
+      real(wp), intent(in) :: a, q
+      real(wp) :: l
+      if (a < 0.5_wp) then
+         l = 2.0_wp*log(a)
+      else
+         l = log1p(-q*q)
+      end if
+   end function log_a2
 
    !> y - ln(1 + y) >= 0 without cancellation.
    elemental function y_minus_log1p(y) result(f)
@@ -572,7 +619,7 @@ contains
       if (state%c_star == 0.5_wp) ctx%qc = 0.0_wp
       ctx%qc = max(0.0_wp, ctx%qc)
       ! C^2 - A^2 = sin(pi (c*-a*)) sin(pi (c*+a*))
-      ctx%d2 = sin(pi*state%gap_width)*sin(pi*(state%a_star + state%c_star))
+      ctx%d2 = sin(pi*state%gap_width)*sin_pi_sum(state%a_star, state%c_star)
       if (state%c_star == 0.5_wp) ctx%d2 = ctx%q**2
       ctx%chi1 = sqrt(ctx%d2)
       if (ctx%zone == zone_no_contact) then
@@ -678,12 +725,12 @@ contains
       end if
       select case (ctx%model)
       case (model_westergaard)
-         g = gw_of(ctx%q**2)
+         g = gw_of(ctx%a**2, ctx%q**2)
       case (model_jkr)
          if (ctx%a_star == 0.0_wp) then
             g = 1.0_wp
          else
-            g = gw_of(ctx%q**2) + (ctx%p_star - ctx%a**2)*2.0_wp*log(ctx%a)
+            g = gw_of(ctx%a**2, ctx%q**2) + (ctx%p_star - ctx%a**2)*log_a2(ctx%a, ctx%q)
          end if
       case (model_dw)
          g = dw_gbar(ctx)
@@ -699,7 +746,7 @@ contains
          g = 0.0_wp
          return
       end if
-      g = gw_of(ctx%q**2)
+      g = gw_of(ctx%a**2, ctx%q**2)
       if (ctx%d2 > 0.0_wp) g = g + ctx%lambda_d2*(-log1p(-ctx%qc**2)) &
          + ctx%lambda*ctx%a**2*y_minus_log1p(ctx%d2/ctx%a**2)
    end function dw_gbar
@@ -716,10 +763,11 @@ contains
             g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*ctx%c_star)
          end if
       else if (ctx%c_star == 0.5_wp .or. ctx%d2 == 0.0_wp) then
-         g = gw_of(ctx%q**2)              ! case 2: uniform -Sigma0 adds no deformation
+         g = gw_of(ctx%a**2, ctx%q**2)              ! case 2: uniform -Sigma0 adds no deformation
       else
          phi = (2.0_wp/pi)*ctx%thc         ! 1 - (2/pi) arcsin(cos(pi c*)/cos(pi a*))
-         g = gw_of(ctx%q**2) - ctx%sigma0*(2.0_wp*phi*log(ctx%a) + 4.0_wp*acosh_integral(ctx))
+         g = gw_of(ctx%a**2, ctx%q**2) - ctx%sigma0*(phi*log_a2(ctx%a, ctx%q) &
+            + 4.0_wp*acosh_integral(ctx))
       end if
    end function md_gbar
 
@@ -771,7 +819,7 @@ contains
          return
       end if
       ra = 0.0_wp
-      if (xr < ctx%a_star) ra = sqrt(sin(pi*(ctx%a_star - xr))*sin(pi*(ctx%a_star + xr)))
+      if (xr < ctx%a_star) ra = sqrt(sin(pi*(ctx%a_star - xr))*sin_pi_sum(ctx%a_star, xr))
       select case (ctx%model)
       case (model_westergaard)
          if (xr < ctx%a_star) p = 2.0_wp*cx*ra
@@ -782,8 +830,8 @@ contains
             p = ieee_value(p, ieee_negative_inf)
          end if
       case (model_dw)
-         if (xr <= ctx%c_star) then
-            rc = sqrt(max(0.0_wp, sin(pi*(ctx%c_star - xr))*sin(pi*(ctx%c_star + xr))))
+         if (c_minus(ctx, xr) >= 0.0_wp) then
+            rc = sqrt(max(0.0_wp, sin(pi*c_minus(ctx, xr))*sin_pi_sum(ctx%c_star, xr)))
             if (ctx%c_star == 0.5_wp) rc = cx
             if (xr < ctx%a_star) then
                ! (1+lambda) p_W(a) - lambda p_W(c), p_W(a) - p_W(c) = -2 cx d2/(ra + rc)
@@ -795,7 +843,7 @@ contains
       case default
          if (xr < ctx%a_star) then
             p = 2.0_wp*cx*ra - (2.0_wp*ctx%sigma0/pi)*atan2(cx*ctx%chi1, ra*ctx%qc)
-         else if (xr <= ctx%c_star .and. ctx%c_star > ctx%a_star) then
+         else if (c_minus(ctx, xr) >= 0.0_wp .and. ctx%c_star > ctx%a_star) then
             p = -ctx%sigma0
          end if
       end select
@@ -820,13 +868,13 @@ contains
          return
       end if
       if (xr <= ctx%a_star) return
-      r = sqrt(sin(pi*(xr - ctx%a_star))*sin(pi*(xr + ctx%a_star)))
+      r = sqrt(sin(pi*(xr - ctx%a_star))*sin_pi_sum(xr, ctx%a_star))
       h = shape(ctx%a, s, r)
       select case (ctx%model)
       case (model_jkr)
          if (ctx%a > 0.0_wp) h = h + 2.0_wp*(ctx%a**2 - ctx%p_star)*asinh(r/ctx%a)
       case (model_dw)
-         if (xr <= ctx%c_star) then
+         if (c_minus(ctx, xr) >= 0.0_wp) then
             h = (1.0_wp + ctx%lambda)*h
          else
             h = h + ctx%lambda*dw_difference(ctx, s, r, xr)
@@ -857,7 +905,7 @@ contains
       real(wp) :: dd
       real(wp) :: rc, d2, z
       d2 = ctx%d2
-      rc = sqrt(max(0.0_wp, sin(pi*(xr - ctx%c_star))*sin(pi*(xr + ctx%c_star))))
+      rc = sqrt(max(0.0_wp, sin(-pi*c_minus(ctx, xr))*sin_pi_sum(xr, ctx%c_star)))
       z = d2/((ra + rc)*(s + rc))
       dd = 2.0_wp*(0.5_wp*ctx%a**2*y_minus_log1p(d2/ctx%a**2) + ctx%a**2*y_minus_log1p(z) &
          + d2*d2*(2.0_wp*ra + rc - s)/(2.0_wp*(ra + rc)**2*(s + rc)) + d2*asinh(rc/ctx%c))
@@ -876,9 +924,9 @@ contains
 
       phx = atan2(r, sin(pi*(0.5_wp - xr)))
       phx_c = atan2(sin(pi*(0.5_wp - xr)), r)
-      beyond = xr > ctx%c_star
+      beyond = c_minus(ctx, xr) < 0.0_wp
       ! thc - phi(x), accurately: tan = q^2 sin(pi(c-x)) sin(pi(c+x)) / (...)
-      dx_top = atan2(ctx%q**2*sin(pi*(ctx%c_star - xr))*sin(pi*(ctx%c_star + xr)), &
+      dx_top = atan2(ctx%q**2*sin(pi*c_minus(ctx, xr))*sin_pi_sum(ctx%c_star, xr), &
          (ctx%chi1*sin(pi*(0.5_wp - xr)) + r*ctx%qc)*(ctx%qc*sin(pi*(0.5_wp - xr)) &
          + ctx%chi1*r))
       top = merge(ctx%thc, phx, beyond)

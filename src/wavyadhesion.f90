@@ -14,7 +14,7 @@ module wavyadhesion
    use wa_md, only: md_equilibrium, md_roots
    use wa_models, only: check_model, model_equilibrium, model_roots
    use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
-      md_state_gbar, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
+      md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
       md_no_contact_family
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
@@ -37,7 +37,7 @@ module wavyadhesion
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
    public :: md_equilibrium, md_roots
    public :: check_model, model_equilibrium, model_roots
-   public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, &
+   public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap, &
       state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
       md_no_contact_family, zone_no_contact

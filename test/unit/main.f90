@@ -9,6 +9,7 @@ program tester
    use test_md, only: collect_md
    use test_reference, only: collect_reference
    use test_branch, only: collect_branch
+   use test_separation, only: collect_separation
    implicit none
    type(unittest_type), allocatable :: tests(:)
    character(len=64) :: suite, only
@@ -38,6 +39,9 @@ program tester
    end if
    if (wanted("branch")) then
       call collect_branch(tests); call run_suite("branch", tests, npass, nfail, only)
+   end if
+   if (wanted("separation")) then
+      call collect_separation(tests); call run_suite("separation", tests, npass, nfail, only)
    end if
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
    if (nfail > 0 .or. npass == 0) error stop 1
