@@ -68,7 +68,7 @@ contains
       real(wp), intent(in) :: with_gbar
       integer, parameter :: n = 2000, repeats = 5
       type(state_type) :: states(n)
-      real(wp) :: times(repeats), t0, checksum, g, sa(n), sq(n), sd2(n), sqc2(n)
+      real(wp) :: times(repeats), t0, checksum, g, sa(n), sq(n), sd2(n), sc(n), sqc(n)
       integer :: i, r, status
       do i = 1, n
          call model_equilibrium(model, params, 0.5_wp*i/(n + 1.0_wp), states(i), status)
@@ -77,14 +77,15 @@ contains
          sq(i) = sin(acos(-1.0_wp)*(0.5_wp - states(i)%a_star))
          sd2(i) = sin(acos(-1.0_wp)*states(i)%gap_width)*sin(acos(-1.0_wp)* &
             (states(i)%a_star + states(i)%c_star))
-         sqc2(i) = sin(acos(-1.0_wp)*(0.5_wp - states(i)%c_star))**2
+         sc(i) = sin(acos(-1.0_wp)*states(i)%c_star)
+         sqc(i) = sin(acos(-1.0_wp)*(0.5_wp - states(i)%c_star))
       end do
       checksum = 0
       do r = 1, repeats
          t0 = seconds()
          do i = 1, n
             if (model == model_dw) then
-               g = dw_mean_gap(params%sigma0, sa(i), sq(i), sd2(i), sqc2(i))
+               g = dw_mean_gap(params%sigma0, sa(i), sq(i), sc(i), sqc(i), sd2(i))
             else
                g = md_state_gbar(params, states(i))
             end if

@@ -287,7 +287,7 @@ contains
       state%c_star = geo%a_star + state%gap_width
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
       state%zone_case = zone_inside
-      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, d2, omc2)
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, c, cos_c, d2)
    end function case1_state
 
    !> Case 2: c* = 1/2, P* = A^2 - Sigma0/2   (2.28a)
@@ -300,7 +300,8 @@ contains
       state%gap_width = 0.5_wp - geo%a_star
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0
       state%zone_case = zone_whole_period
-      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, geo%one_minus_a2, 0.0_wp)
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, 1.0_wp, 0.0_wp, &
+         geo%one_minus_a2)
    end function case2_state
 
    !> a* = 1/2 (full contact at its threshold, (2.29)) and Sigma0 = 0 (Westergaard).

@@ -50,6 +50,8 @@ module wa_separation
       real(wp) :: lambda = 0.0_wp, lambda_d2 = 0.0_wp
       real(wp) :: thc = 0.0_wp, thc_c = 0.0_wp
       real(wp) :: crest = 0.0_wp
+      !> 1/2 - c* = (1/2 - a*) - (c* - a*), accurate where c* is near 1/2
+      real(wp) :: hmc = 0.0_wp
    end type separation_context
 
    !> Gauss-Legendre, 16 points on [0, 1]
@@ -130,17 +132,17 @@ contains
    end function dw_state_gbar
 
    !> DW mean gap from the quantities the solver has at hand (A = sin(pi a*),
-   !> q = cos(pi a*), d2 = C^2 - A^2, qc2 = cos^2(pi c*); case 2: d2 = q^2, qc2 = 0), as in
-   !> dw_state_gbar; 0 at full contact (q = 0).
-   elemental function dw_mean_gap(sigma0, a, q, d2, qc2) result(g)
-      real(wp), intent(in) :: sigma0, a, q, d2, qc2
+   !> q = cos(pi a*), C = sin(pi c*), qc = cos(pi c*), d2 = C^2 - A^2; case 2: C = 1,
+   !> qc = 0, d2 = q^2), as in dw_state_gbar; 0 at full contact (q = 0).
+   elemental function dw_mean_gap(sigma0, a, q, c, qc, d2) result(g)
+      real(wp), intent(in) :: sigma0, a, q, c, qc, d2
       real(wp) :: g, lambda
       g = 0.0_wp
       if (q <= 0.0_wp) return
       g = gw_of(a*a, q*q)
       if (d2 <= 0.0_wp .or. sigma0 == 0.0_wp) return
       lambda = sigma0/(2.0_wp*q*sqrt(d2))
-      g = g + lambda*(d2*(-log1p(-qc2)) + a*a*y_minus_log1p(d2/(a*a)))
+      g = g + lambda*(d2*(-log_a2(c, qc)) + a*a*y_minus_log1p(d2/(a*a)))
    end function dw_mean_gap
 
    !> MD mean gap of a solved state (zone cases 0-3); the quadrature of
@@ -558,6 +560,18 @@ contains
       end if
    end function sin_pi_sum
 
+   !> sin(pi (c* + v)) for v in [0, 1/2], from 1/2 - c* (ctx%hmc) past 1/2.
+   elemental function sin_pi_c_plus(ctx, v) result(y)
+      type(separation_context), intent(in) :: ctx
+      real(wp), intent(in) :: v
+      real(wp) :: y
+      if (ctx%hmc + (0.5_wp - v) >= 0.5_wp) then
+         y = sin(pi*((ctx%a_star + ctx%width) + v))
+      else
+         y = sin(pi*(ctx%hmc + (0.5_wp - v)))
+      end if
+   end function sin_pi_c_plus
+
    !> c* - x*, with c* = a* + (c* - a*) from the accurate zone width (c_star itself may be
    !> off by half an ulp; the gap slope is log-singular at c*).
    elemental function c_minus(ctx, xr) result(d)
@@ -614,12 +628,13 @@ contains
       ctx%dcod = params%dcod
       ctx%a = sin(pi*state%a_star)
       ctx%q = sin(pi*(0.5_wp - state%a_star))
-      ctx%c = sin(pi*state%c_star)
-      ctx%qc = sin(pi*((0.5_wp - state%a_star) - state%gap_width))
-      if (state%c_star == 0.5_wp) ctx%qc = 0.0_wp
-      ctx%qc = max(0.0_wp, ctx%qc)
+      ctx%hmc = max(0.0_wp, (0.5_wp - state%a_star) - state%gap_width)
+      if (state%c_star == 0.5_wp) ctx%hmc = 0.0_wp
+      ctx%c = cos(pi*ctx%hmc)
+      if (ctx%hmc > 0.25_wp) ctx%c = sin(pi*(state%a_star + state%gap_width))
+      ctx%qc = sin(pi*ctx%hmc)
       ! C^2 - A^2 = sin(pi (c*-a*)) sin(pi (c*+a*))
-      ctx%d2 = sin(pi*state%gap_width)*sin_pi_sum(state%a_star, state%c_star)
+      ctx%d2 = sin(pi*state%gap_width)*sin_pi_c_plus(ctx, state%a_star)
       if (state%c_star == 0.5_wp) ctx%d2 = ctx%q**2
       ctx%chi1 = sqrt(ctx%d2)
       if (ctx%zone == zone_no_contact) then
@@ -747,7 +762,7 @@ contains
          return
       end if
       g = gw_of(ctx%a**2, ctx%q**2)
-      if (ctx%d2 > 0.0_wp) g = g + ctx%lambda_d2*(-log1p(-ctx%qc**2)) &
+      if (ctx%d2 > 0.0_wp) g = g + ctx%lambda_d2*(-log_a2(ctx%c, ctx%qc)) &
          + ctx%lambda*ctx%a**2*y_minus_log1p(ctx%d2/ctx%a**2)
    end function dw_gbar
 
@@ -831,7 +846,7 @@ contains
          end if
       case (model_dw)
          if (c_minus(ctx, xr) >= 0.0_wp) then
-            rc = sqrt(max(0.0_wp, sin(pi*c_minus(ctx, xr))*sin_pi_sum(ctx%c_star, xr)))
+            rc = sqrt(max(0.0_wp, sin(pi*c_minus(ctx, xr))*sin_pi_c_plus(ctx, xr)))
             if (ctx%c_star == 0.5_wp) rc = cx
             if (xr < ctx%a_star) then
                ! (1+lambda) p_W(a) - lambda p_W(c), p_W(a) - p_W(c) = -2 cx d2/(ra + rc)
@@ -887,14 +902,34 @@ contains
    end function gap_at
 
    !> 2 [S r - A^2 asinh(r/A)]: the gap outside a Westergaard contact (A > 0), 2 S^2 at A = 0.
+   !> With t = r/A it is 2 A^2 f(t), f = t sqrt(1+t^2) - asinh t = 2 sum_k c_k t^(2k+3)/(2k+3),
+   !> c_k the coefficients of (1+u)^(-1/2): the series for t < 1/2 (DW multiplies the gap in
+   !> the zone by 1 + lambda, up to 1e20, so it must keep its relative accuracy as t -> 0).
    elemental function shape(a, s, r) result(h)
       real(wp), intent(in) :: a, s, r
       real(wp) :: h
-      if (a > 0.0_wp) then
-         h = 2.0_wp*(s*r - a*a*asinh(r/a))
-      else
+      real(wp) :: t, t2, term, ck, total
+      integer :: k
+      if (a <= 0.0_wp) then
          h = 2.0_wp*s*s
+         return
       end if
+      t = r/a
+      if (t >= 0.5_wp) then
+         h = 2.0_wp*(s*r - a*a*asinh(t))
+         return
+      end if
+      t2 = t*t
+      ck = 1.0_wp
+      term = t*t2
+      total = term/3.0_wp
+      do k = 1, 40
+         ck = -ck*real(2*k - 1, wp)/real(2*k, wp)
+         term = term*t2
+         total = total + ck*term/real(2*k + 3, wp)
+         if (abs(term) < 1.0e-17_wp*total) exit
+      end do
+      h = 4.0_wp*a*a*total
    end function shape
 
    !> h_W(a) - h_W(c) beyond c (x* > c*), as a sum of non-negative terms and an O(d2^2)
@@ -905,7 +940,7 @@ contains
       real(wp) :: dd
       real(wp) :: rc, d2, z
       d2 = ctx%d2
-      rc = sqrt(max(0.0_wp, sin(-pi*c_minus(ctx, xr))*sin_pi_sum(xr, ctx%c_star)))
+      rc = sqrt(max(0.0_wp, sin(-pi*c_minus(ctx, xr))*sin_pi_c_plus(ctx, xr)))
       z = d2/((ra + rc)*(s + rc))
       dd = 2.0_wp*(0.5_wp*ctx%a**2*y_minus_log1p(d2/ctx%a**2) + ctx%a**2*y_minus_log1p(z) &
          + d2*d2*(2.0_wp*ra + rc - s)/(2.0_wp*(ra + rc)**2*(s + rc)) + d2*asinh(rc/ctx%c))
@@ -926,7 +961,7 @@ contains
       phx_c = atan2(sin(pi*(0.5_wp - xr)), r)
       beyond = c_minus(ctx, xr) < 0.0_wp
       ! thc - phi(x), accurately: tan = q^2 sin(pi(c-x)) sin(pi(c+x)) / (...)
-      dx_top = atan2(ctx%q**2*sin(pi*c_minus(ctx, xr))*sin_pi_sum(ctx%c_star, xr), &
+      dx_top = atan2(ctx%q**2*sin(pi*c_minus(ctx, xr))*sin_pi_c_plus(ctx, xr), &
          (ctx%chi1*sin(pi*(0.5_wp - xr)) + r*ctx%qc)*(ctx%qc*sin(pi*(0.5_wp - xr)) &
          + ctx%chi1*r))
       top = merge(ctx%thc, phx, beyond)

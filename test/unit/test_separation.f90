@@ -115,7 +115,10 @@ contains
          call state_mean_gap(model, params, s, g, status, msg)
          call check(error, status == wa_ok, path//": gbar: "//trim(msg))
          if (allocated(error)) exit
-         worst(1) = max(worst(1), err(t(1), t_ref))
+         ! DW: the traction has a square-root edge at c*, so at x* = c* (within a few ulps)
+         ! its value is ill-conditioned (dp/dx ~ lambda/sqrt(c* - x*)); the gap is not
+         if (.not. (model == model_dw .and. abs(x(1) - s%c_star) <= 4.0_wp*spacing(s%c_star))) &
+            worst(1) = max(worst(1), err(t(1), t_ref))
          worst(2) = max(worst(2), err(h(1), h_ref))
          worst(3) = max(worst(3), err(g, g_ref))
          if (maxval(worst) > 1.0_wp) then
