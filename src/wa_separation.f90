@@ -74,7 +74,7 @@ module wa_separation
       0.06231448562776693602624_wp, 0.04757925584124639240497_wp, &
       0.03112676196932394643142_wp, 0.01357622970587704742589_wp]
    !> Tanh-sinh step and half-range (|t| <= ts_range): 2 ts_range/ts_step + 1 nodes.
-   real(wp), parameter :: ts_step = 1.0_wp/12.0_wp, ts_range = 3.2_wp
+   real(wp), parameter :: ts_step = 1.0_wp/16.0_wp, ts_range = 3.4_wp
    !> Panels of the graded rules grow by this factor away from the near-singularity.
    real(wp), parameter :: grade = 4.0_wp
    integer, parameter :: max_panels = 400, max_iterations = 200
@@ -141,6 +141,10 @@ contains
       if (q <= 0.0_wp) return
       g = gw_of(a*a, q*q)
       if (d2 <= 0.0_wp .or. sigma0 == 0.0_wp) return
+      if (qc == 0.0_wp) then                 ! case 2: (1+lambda) g_W(A^2), lambda = Sigma0/(2q^2)
+         g = (1.0_wp + sigma0/(2.0_wp*q*q))*g
+         return
+      end if
       lambda = sigma0/(2.0_wp*q*sqrt(d2))
       g = g + lambda*(d2*(-log_a2(c, qc)) + a*a*y_minus_log1p(d2/(a*a)))
    end function dw_mean_gap
@@ -578,8 +582,12 @@ contains
       type(separation_context), intent(in) :: ctx
       real(wp), intent(in) :: xr
       real(wp) :: d
-      d = (ctx%a_star - xr) + ctx%width
-      if (ctx%c_star == 0.5_wp) d = 0.5_wp - xr
+      ! from the side with the smaller operands (fewer rounding errors)
+      if (ctx%hmc + abs(0.5_wp - xr) < ctx%width + abs(ctx%a_star - xr)) then
+         d = (0.5_wp - xr) - ctx%hmc
+      else
+         d = (ctx%a_star - xr) + ctx%width
+      end if
    end function c_minus
 
    !> ln A^2 from A = sin(pi a*) and q = cos(pi a*): 2 ln A, or ln(1 - q^2) near A = 1.
@@ -976,13 +984,70 @@ contains
          hi = grade*hi
       end do
       if (beyond) then
-         total = total + ts_panel(ctx, lo, ctx%thc, ctx%thc - lo, 0.0_wp, &
+         total = total + right_graded(ctx, lo, ctx%thc, ctx%thc - lo, 0.0_wp, &
             0.5_wp*pi - lo, ctx%thc_c)
-         total = total + ts_panel(ctx, ctx%thc, phx, 0.0_wp, dx_top, ctx%thc_c, phx_c)
+         ! beyond thc: tanh-sinh next to the log singularity, then Gauss-Legendre panels
+         ! doubling in size (the integrand varies on the scales thc and A/q)
+         if (phx <= 2.0_wp*ctx%thc) then
+            total = total + ts_panel(ctx, ctx%thc, phx, 0.0_wp, dx_top, ctx%thc_c, phx_c, &
+               -dx_top)
+         else
+            total = total + ts_panel(ctx, ctx%thc, 2.0_wp*ctx%thc, 0.0_wp, -ctx%thc, &
+               ctx%thc_c, 0.5_wp*pi - 2.0_wp*ctx%thc)
+            lo = 2.0_wp*ctx%thc
+            do panel = 1, max_panels
+               hi = min(phx, 2.0_wp*lo)
+               if (hi > phx/1.5_wp) hi = phx
+               total = total + gl_log_panel(ctx, lo, hi)
+               if (hi >= phx) exit
+               lo = hi
+            end do
+         end if
       else
-         total = total + ts_panel(ctx, lo, phx, ctx%thc - lo, dx_top, 0.5_wp*pi - lo, phx_c)
+         total = total + right_graded(ctx, lo, phx, ctx%thc - lo, dx_top, 0.5_wp*pi - lo, phx_c)
       end if
    end function md_log_integral
+
+   !> The panel [lo, top] that ends at (or just before) the log singularity at thc; when
+   !> thc is near pi/2 the second one, at pi - thc (sin(thc + f) = 0), sits 2 (pi/2 - thc)
+   !> beyond it: Gauss-Legendre panels shrinking by 4 towards top down to that scale, then
+   !> tanh-sinh. dlo, dtop = thc - lo, thc - top; clo, ctop = pi/2 - lo, pi/2 - top.
+   pure function right_graded(ctx, lo, top, dlo, dtop, clo, ctop) result(total)
+      type(separation_context), intent(in) :: ctx
+      real(wp), intent(in) :: lo, top, dlo, dtop, clo, ctop
+      real(wp) :: total
+      real(wp) :: d, scale
+      integer :: k
+      total = 0.0_wp
+      scale = max(2.0_wp*ctx%thc_c + abs(dtop), tiny(1.0_wp))
+      d = top - lo
+      do k = 1, max_panels
+         if (d <= 2.0_wp*scale) exit
+         ! [top - d, top - d/4]
+         total = total + gl_log_panel_d(ctx, top - d, 0.75_wp*d, dtop + d, ctop + d)
+         d = 0.25_wp*d
+      end do
+      if (d >= top - lo) then
+         total = total + ts_panel(ctx, lo, top, dlo, dtop, clo, ctop)
+      else
+         total = total + ts_panel(ctx, top - d, top, dtop + d, dtop, ctop + d, ctop, d)
+      end if
+   end function right_graded
+
+   !> Gauss-Legendre on [f0, f0 + w] given thc - f0 and pi/2 - f0 accurately.
+   pure function gl_log_panel_d(ctx, f0, w, d0, c0) result(total)
+      type(separation_context), intent(in) :: ctx
+      real(wp), intent(in) :: f0, w, d0, c0
+      real(wp) :: total, f
+      integer :: i
+      total = 0.0_wp
+      do i = 1, size(gl_x)
+         f = f0 + w*gl_x(i)
+         total = total + gl_w(i)*log_ratio(ctx, f, d0 - w*gl_x(i), c0 - w*gl_x(i)) &
+            *weight(ctx, sin(f))
+      end do
+      total = total*w
+   end function gl_log_panel_d
 
    !> Gauss-Legendre on [lo, hi] (away from thc) of ln|...| w.
    pure function gl_log_panel(ctx, lo, hi) result(total)
@@ -1000,14 +1065,17 @@ contains
 
    !> Tanh-sinh on [lo, hi] of ln|sin(thc - f)/sin(thc + f)| w(f), given thc - lo, thc - hi,
    !> pi/2 - lo and pi/2 - hi accurately (a node takes them from its nearer end).
-   pure function ts_panel(ctx, lo, hi, dlo, dhi, clo, chi) result(total)
+   pure function ts_panel(ctx, lo, hi, dlo, dhi, clo, chi, width) result(total)
       type(separation_context), intent(in) :: ctx
       real(wp), intent(in) :: lo, hi, dlo, dhi, clo, chi
+      !> hi - lo where the caller knows it better than by subtraction
+      real(wp), intent(in), optional :: width
       real(wp) :: total
       real(wp) :: t, u, e, elo, ehi, wt, f, delta, fc, half
       integer :: k, nk
       total = 0.0_wp
       half = 0.5_wp*(hi - lo)
+      if (present(width)) half = 0.5_wp*width
       if (half <= 0.0_wp) return
       nk = nint(ts_range/ts_step)
       do k = -nk, nk

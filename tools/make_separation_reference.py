@@ -27,7 +27,9 @@ mean gap or the no-contact Clausen forms.  The definitions used:
     gbar by nested quadrature.
 
 Usage: python3 tools/make_separation_reference.py [--only westergaard,jkr,dw,md,md_nocontact]
-       [--per-model N] [--verify]
+       [--per-model N] [--verify] [--refresh-md-profiles]
+The tables in test/data were made with: --only westergaard,jkr,dw,md_nocontact --per-model 250;
+--only md --per-model 100; then --refresh-md-profiles (MD: ~15 CPU-minutes, nested quadrature).
 """
 
 import argparse
@@ -45,6 +47,8 @@ DATADIR = os.path.join(ROOT, "test", "data")
 DPS = 24
 # digits for the nested MD mean-gap quadrature (the tables are checked to 1e-12)
 GDPS_MD = 17
+# digits for the MD profile columns (--refresh-md-profiles)
+DPS_PROFILE = 34
 DPS_DW = 50
 # the no-contact table is thinned (nested quadrature): these alpha, mu
 NC_ALPHA = [0.01, 0.3, 1.0, 10.0]
@@ -68,13 +72,13 @@ def params(alpha, mu):
     return sigma0, dcod
 
 
-def graded(lo, hi, scale):
+def graded(lo, hi, scale, ratio=32):
     """Break points from lo to hi, geometric from lo at `scale` (for near-singularities)."""
     pts = [lo]
     d = scale
     while lo + d < hi and d < (hi - lo) / 4:
         pts.append(lo + d)
-        d *= 32
+        d *= ratio
     pts.append(hi)
     return pts
 
@@ -157,12 +161,18 @@ def md_funcs(sigma0, a, gap_w):
     def psi(x):
         cx = chi3(x)
 
+        sx = sin(pi * x)
+
         def f(t):
             ct = chi3(t)
-            if ct == cx:
+            st = sin(pi * t)
+            # chi3(x) - chi3(t) = A^2 sin(pi(x-t)) sin(pi(x+t)) / (S_x^2 S_t^2 (chi3(x)+chi3(t)))
+            diff = A * A * sin(pi * (x - t)) * sin(pi * (x + t)) / (sx * sx * st * st * (cx + ct))
+            if diff == 0:
                 return mpf(0)
-            return log(abs((cx + ct) / (cx - ct)))
-        pts = graded(a, c, (c - a) * mpf(2) ** -30)
+            return log(abs((cx + ct) / diff))
+        # chi3 turns on the scale a* near t = a* (and the log on the scale |x - t|)
+        pts = graded(a, c, min(a, c - a) / 16, ratio=4)
         if a < x < c:
             pts = sorted(set(pts + [x]))
         return -quad(f, pts)
@@ -353,6 +363,33 @@ def run_nocontact():
     write("md_nocontact", rows, "a* = 0, Dugdale zone |x*| < c*, c* = fraction x first closure")
 
 
+def refresh_md_profiles():
+    """Recompute the MD traction and gap columns of separation_md.txt at DPS_PROFILE digits
+    (cheap), keeping the mean gap (the expensive nested quadrature)."""
+    path = os.path.join(DATADIR, "separation_md.txt")
+    lines = open(path).read().splitlines()
+    out = []
+    with mp.workdps(DPS_PROFILE):
+        for line in lines:
+            if line.startswith("#"):
+                out.append(line.replace("mp.dps = %d;" % DPS, "mp.dps = %d (profiles %d);"
+                                        % (DPS, DPS_PROFILE)))
+                continue
+            t = line.split()
+            alpha, mu, a, c, gap_w, x = (float(t[0]), float(t[1]), float(t[2]), float(t[3]),
+                                         float(t[4]), float(t[8]))
+            sigma0, dcod = params(alpha, mu)
+            P, trac, gap = md_funcs(sigma0, mpf(a), mpf(gap_w))
+            xr = reduced(x)
+            t[9] = fmt(trac(xr))
+            t[10] = fmt(gap(xr))
+            out.append(" ".join(t))
+    with open(path + ".tmp", "w") as f:
+        f.write("\n".join(out) + "\n")
+    os.replace(path + ".tmp", path)
+    print("refreshed", path, flush=True)
+
+
 def verify():
     """JKR gap slope against the periodic Hilbert transform of the JKR traction."""
     alpha, a = 0.4, mpf("0.17")
@@ -368,10 +405,16 @@ def main():
     ap.add_argument("--only", default="westergaard,jkr,dw,md,md_nocontact")
     ap.add_argument("--per-model", type=int, default=200)
     ap.add_argument("--verify", action="store_true")
+    ap.add_argument("--refresh-md-profiles", action="store_true",
+                    help="recompute the traction and gap columns of separation_md.txt at "
+                         "DPS_PROFILE digits, keeping its gbar column")
     args = ap.parse_args()
     mp.dps = DPS
     if args.verify:
         verify()
+        return
+    if args.refresh_md_profiles:
+        refresh_md_profiles()
         return
     for name in args.only.split(","):
         if name == "westergaard":       # S - A cancels near a* = 1/2: closed forms at dps 50

@@ -111,25 +111,33 @@ contains
          call new_params(alpha, mu, params, status)
          call state_profile(model, params, s, x, t, h, status, msg)
          call check(error, status == wa_ok, path//": "//trim(line)//": "//trim(msg))
-         if (allocated(error)) exit
+         if (status /= wa_ok) exit
          call state_mean_gap(model, params, s, g, status, msg)
          call check(error, status == wa_ok, path//": gbar: "//trim(msg))
-         if (allocated(error)) exit
-         ! DW: the traction has a square-root edge at c*, so at x* = c* (within a few ulps)
-         ! its value is ill-conditioned (dp/dx ~ lambda/sqrt(c* - x*)); the gap is not
-         if (.not. (model == model_dw .and. abs(x(1) - s%c_star) <= 4.0_wp*spacing(s%c_star))) &
+         if (status /= wa_ok) exit
+         ! At x* = c* (within a few ulps) the traction is ill-conditioned: DW has a
+         ! square-root edge there (dp/dx ~ lambda/sqrt(c* - x*)), MD a jump from -Sigma0 to 0;
+         ! the gap is continuous and is checked everywhere
+         if (.not. ((model == model_dw .or. model == model_md) .and. &
+               abs(abs(x(1)) - s%c_star) <= 4.0_wp*spacing(max(s%c_star, tiny(1.0_wp))))) &
             worst(1) = max(worst(1), err(t(1), t_ref))
-         worst(2) = max(worst(2), err(h(1), h_ref))
+         if (model == model_md .and. abs(abs(x(1)) - s%c_star) <= 4.0_wp*spacing(s%c_star) &
+               .and. s%c_star > 0.0_wp) then
+            ! MD gap at x* = c*: its slope is log-singular there (2 Sigma0 ln|c* - x*|), so a
+            ! few ulps in x* (or in c* = a* + (c*-a*)) move it by ~ 2 Sigma0 (|ln d| + 10) 4 d
+            worst(2) = max(worst(2), abs(h(1) - h_ref)/max(rtol*max(abs(h_ref), abs_below), &
+               8.0_wp*params%sigma0*(abs(log(spacing(s%c_star))) + 10.0_wp)*spacing(s%c_star)))
+         else
+            worst(2) = max(worst(2), err(h(1), h_ref))
+         end if
          worst(3) = max(worst(3), err(g, g_ref))
-         if (maxval(worst) > 1.0_wp) then
+         if (maxval(worst) > 1.0_wp .and. .not. allocated(error)) then
             write (msg, '(3es24.16)') t(1), h(1), g
             call check(error, .false., path//": row "//trim(line)//" got "//trim(msg))
-            exit
          end if
          rows = rows + 1
       end do
       close (unit)
-      if (allocated(error)) return
       write (*, '(4x,a,i0,a,3es9.2)') "rows ", rows, "  max error traction gap gbar:", worst
       call check(error, rows > 0, path//": no rows")
       call check(error, all(worst <= 1.0_wp), path//": error above tolerance")
