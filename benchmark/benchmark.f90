@@ -76,7 +76,48 @@ contains
       write (*, '(a,a,a,f6.3,a,g10.3,a,f9.3,a,i0,a,es10.3,a)') "point  ", name(model), &
          " alpha ", alpha, " mu ", mu, ": ", 1.0e6_wp*median(times), " us/point  (failures ", &
          failures/repeats, ", checksum ", checksum, ")"
+      call bench_gbar(model, params, median(times))
    end subroutine bench_points
+
+   !> The share of the point cost spent on the mean gap gbar (filled by the solvers):
+   !> gbar alone on the same 2000 states (DW: dw_mean_gap from the quantities the case
+   !> builders pass it; MD: md_state_gbar), and the point cost without it.
+   subroutine bench_gbar(model, params, with_gbar)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: with_gbar
+      integer, parameter :: n = 2000, repeats = 5
+      type(state_type) :: states(n)
+      real(wp) :: times(repeats), t0, checksum, g, sa(n), sq(n), sd2(n), sc(n), sqc(n)
+      integer :: i, r, status
+      do i = 1, n
+         call model_equilibrium(model, params, 0.5_wp*i/(n + 1.0_wp), states(i), status)
+         ! what the DW case builders have at hand when they call dw_mean_gap
+         sa(i) = sin(acos(-1.0_wp)*states(i)%a_star)
+         sq(i) = sin(acos(-1.0_wp)*(0.5_wp - states(i)%a_star))
+         sd2(i) = sin(acos(-1.0_wp)*states(i)%gap_width)*sin(acos(-1.0_wp)* &
+            (states(i)%a_star + states(i)%c_star))
+         sc(i) = sin(acos(-1.0_wp)*states(i)%c_star)
+         sqc(i) = sin(acos(-1.0_wp)*(0.5_wp - states(i)%c_star))
+      end do
+      checksum = 0
+      do r = 1, repeats
+         t0 = seconds()
+         do i = 1, n
+            if (model == model_dw) then
+               g = dw_mean_gap(params%sigma0, sa(i), sq(i), sc(i), sqc(i), sd2(i))
+            else
+               g = md_state_gbar(params, states(i))
+            end if
+            checksum = checksum + g
+         end do
+         times(r) = (seconds() - t0)/n
+      end do
+      write (*, '(a,f9.3,a,f9.3,a,f6.1,a,es10.3,a)') "       gbar alone: ", &
+         1.0e6_wp*median(times), " us/point; point without gbar: ", &
+         1.0e6_wp*(with_gbar - median(times)), " us (gbar adds ", &
+         100.0_wp*median(times)/(with_gbar - median(times)), " %; checksum ", checksum, ")"
+   end subroutine bench_gbar
 
    subroutine bench_branch(model, alpha, mu)
       integer, intent(in) :: model

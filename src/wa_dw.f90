@@ -16,6 +16,7 @@ module wa_dw
    use wa_kernels, only: wavy_gap_shape
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p
+   use wa_separation, only: dw_mean_gap
    implicit none
    private
 
@@ -323,6 +324,7 @@ contains
       state%c_star = min(nearest(0.5_wp, -1.0_wp), geo%a_star + state%gap_width)  ! c* < 1/2
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
       state%zone_case = zone_inside
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, c, cos_c, d2)
    end function case1_state
 
    !> Case 2: c* = 1/2, P* = A^2 - Sigma0/2   (2.28a)
@@ -335,6 +337,8 @@ contains
       state%gap_width = 0.5_wp - geo%a_star
       state%p_star = geo%a**2 - 0.5_wp*params%sigma0
       state%zone_case = zone_whole_period
+      state%gbar = dw_mean_gap(params%sigma0, geo%a, geo%cos_a, 1.0_wp, 0.0_wp, &
+         geo%one_minus_a2)
    end function case2_state
 
    !> a* = 1/2 (full contact at its threshold, (2.29)) and Sigma0 = 0 (Westergaard).

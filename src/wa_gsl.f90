@@ -27,6 +27,7 @@ module wa_gsl
    public :: gsl_sf_ellint_rf_e, gsl_sf_ellint_rd_e, gsl_sf_ellint_rj_e
    public :: gsl_sf_ellint_rf, gsl_sf_ellint_rd, gsl_sf_ellint_rj
    public :: gsl_set_error_handler_off
+   public :: gsl_sf_clausen
    public :: gsl_integration_workspace_alloc, gsl_integration_workspace_free
    public :: gsl_integration_qaws_table_alloc, gsl_integration_qaws_table_free
    public :: gsl_integration_qaws, gsl_integration_qag, gsl_integration_qags
@@ -84,6 +85,13 @@ module wa_gsl
          integer(c_int), value, intent(in) :: mode
          real(c_double) :: r
       end function gsl_sf_ellint_rj
+
+      !> Clausen function Cl_2(x) = -int_0^x ln|2 sin(t/2)| dt; pure, for elemental code.
+      pure function gsl_sf_clausen(x) result(r) bind(C, name="gsl_sf_clausen")
+         import :: c_double
+         real(c_double), value, intent(in) :: x
+         real(c_double) :: r
+      end function gsl_sf_clausen
 
       !> Replace GSL's abort-on-error handler by "return the status".
       function gsl_set_error_handler_off() result(previous) &

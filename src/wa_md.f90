@@ -42,6 +42,7 @@ module wa_md
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p
+   use wa_separation, only: md_state_gbar
    implicit none
    private
 
@@ -228,6 +229,7 @@ contains
 
       call solve(params, a_star, .true., states, n_roots, status, errmsg)
       if (status == wa_ok) state = states(1)
+      if (status == wa_ok) state%gbar = md_state_gbar(params, state)
    end subroutine md_equilibrium
 
    !> Every MD equilibrium at a*: the case-1 roots of (2.27b) by increasing c*, then the
@@ -248,6 +250,7 @@ contains
       if (status /= wa_ok) return
       n = min(n_roots, size(states), size(found))
       states(1:n) = found(1:n)
+      states(1:n)%gbar = md_state_gbar(params, states(1:n))
       if (n_roots > size(states)) then
          call set_error(wa_capacity_too_small, "md_roots: states has room for fewer "// &
             "than all equilibrium states; n_roots is the number needed", status, errmsg)

@@ -13,6 +13,7 @@ module wa_models
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_roots
    use wa_md, only: md_equilibrium, md_roots
+   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap
    implicit none
    private
 
@@ -131,8 +132,10 @@ contains
       state%gap_width = 0.0_wp
       if (model == model_jkr) then
          state%p_star = jkr_load(params%alpha, a_star)
+         state%gbar = jkr_mean_gap(params%alpha, a_star)
       else
          state%p_star = westergaard_load(a_star)
+         state%gbar = westergaard_mean_gap(a_star)
       end if
       state%zone_case = merge(zone_full_contact, zone_inside, a_star == 0.5_wp)
    end subroutine closed_form_state

@@ -8,12 +8,16 @@ module wavyadhesion
    use wa_params, only: params_type, scales_type, new_params, dimensional_params, &
       reduced_modulus, alpha_min, alpha_max, mu_min, mu_max
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
-      model_westergaard, model_jkr, model_dw, model_md
+      zone_no_contact, model_westergaard, model_jkr, model_dw, model_md
    use wa_kernels, only: westergaard_load, jkr_load, westergaard_pressure, &
       westergaard_displacement, westergaard_gap
    use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
    use wa_md, only: md_equilibrium, md_roots
    use wa_models, only: check_model, model_equilibrium, model_roots
+   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
+      md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
+      md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
+      md_no_contact_family
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
       event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
       event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
@@ -35,6 +39,10 @@ module wavyadhesion
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
    public :: md_equilibrium, md_roots
    public :: check_model, model_equilibrium, model_roots
+   public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap, &
+      state_mean_gap, state_profile, state_traction, state_gap, check_state, &
+      md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
+      md_no_contact_family, zone_no_contact
    public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
       event_pull_off, event_branch_end, event_a_turn
