@@ -20,6 +20,7 @@ module wa_branch
       curve_case2_load, curve_variable, curve_equilibrium
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_separation, only: state_mean_gap
    implicit none
    private
 
@@ -41,6 +42,8 @@ module wa_branch
    type :: branch_type
       integer :: n = 0
       real(wp), allocatable :: a_star(:), c_star(:), p_star(:)
+      !> Mean gap over Delta, gbar* (doc/theory.md, "Separation")
+      real(wp), allocatable :: gbar(:)
       integer, allocatable :: zone_case(:)
       !> Stable under load control (doc/theory.md, "Stability"): case 2 where dP*/da* > 0;
       !> case 1 where D = dP*/da* dF/dy - dP*/dy dF/da* > 0, which changes sign only at
@@ -802,6 +805,8 @@ contains
       type(branch_type), intent(inout) :: branch
       type(state_type) :: s
       logical :: stable
+      integer :: status
+      real(wp) :: g
       if (q%zone_case == zone_inside) then
          s = curve_state(model, params, q%a, q%y)
       else
@@ -811,6 +816,9 @@ contains
          s%p_star = curve_case2_load(model, params, q%a)
          s%zone_case = q%zone_case
       end if
+      ! the curve's states leave gbar to the accepted points (MD: a quadrature)
+      call state_mean_gap(model, params, s, g, status)
+      s%gbar = g
       if (q%zone_case == zone_inside) then
          stable = q%det > 0.0_wp
       else                                             ! one degree of freedom: dP*/da* > 0
@@ -829,6 +837,7 @@ contains
       branch%a_star(branch%n) = s%a_star
       branch%c_star(branch%n) = s%c_star
       branch%p_star(branch%n) = s%p_star
+      branch%gbar(branch%n) = s%gbar
       branch%zone_case(branch%n) = s%zone_case
       branch%stable(branch%n) = stable
       branch%event(branch%n) = event
@@ -842,6 +851,7 @@ contains
       call grow_real(branch%a_star, branch%n, capacity)
       call grow_real(branch%c_star, branch%n, capacity)
       call grow_real(branch%p_star, branch%n, capacity)
+      call grow_real(branch%gbar, branch%n, capacity)
       call grow_int(branch%zone_case, branch%n, capacity)
       call grow_int(branch%event, branch%n, capacity)
       call grow_int(branch%extremum, branch%n, capacity)
