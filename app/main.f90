@@ -164,7 +164,9 @@ contains
       call write_header(out, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
          model_name(opts%model), params, "a_star c_star P_star b_star zone_case stable event", &
          [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: 1 = stable under load control", &
-         event_legend(1), event_legend(2), event_legend(3)])
+         event_legend(1), event_legend(2), event_legend(3), &
+         "zone_case: 0 no contact (MD: a* = 0, Dugdale zone |x*| < c*), 1 a*<c*<1/2,", &
+         "           2 c*=1/2, 3 full contact"])
       do i = 1, b%n
          call write_row(out, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
             b%a_star(i) + 0.4_wp*(b%c_star(i) - b%a_star(i))], &

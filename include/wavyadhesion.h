@@ -53,6 +53,8 @@ extern "C" {
 #define WA_NUMERICAL_ERROR 5    /* a numerical building block (GSL, quadrature) failed */
 
 /* Zone cases of a state (zone_inside, zone_whole_period, zone_full_contact). */
+#define WA_ZONE_NO_CONTACT 0    /* MD only: a* = 0, a Dugdale zone |x*| < c* and no contact
+                                   (traced branches: the pieces ahead of the contact curve) */
 #define WA_ZONE_INSIDE 1        /* a* < c* < 1/2 */
 #define WA_ZONE_WHOLE_PERIOD 2  /* a* < c* = 1/2 */
 #define WA_ZONE_FULL_CONTACT 3  /* a* = c* = 1/2 */
@@ -124,7 +126,10 @@ int wa_roots_msg(int model, double alpha, double mu, double a_star, int capacity
    switch as a point of its own (event[] = WA_EVENT_FOLD, WA_EVENT_SWITCH), and every point
    where a* turns back (MD: WA_EVENT_A_TURN; P* is not extremal there). The curve can
    come in pieces (DW, MD: a piece that returns to a* -> 0, then the one that reaches
-   a* = 1/2): each piece starts and ends with a WA_EVENT_BRANCH_END point, so the first
+   a* = 1/2; MD with mu > 0 begins with its states without contact, zone case
+   WA_ZONE_NO_CONTACT, a* = 0, c* the Dugdale zone half-width, from the first interaction
+   c* = 0 to where they join the a* -> 0 end of the contact curve; they are never stable
+   under load control): each piece starts and ends with a WA_EVENT_BRANCH_END point, so the first
    and the last point are WA_EVENT_BRANCH_END, the last at a* = 1/2 (JKR: 1/2 - 1e-9,
    where P* is still finite), and a branch of k pieces has 2 (k - 1) more BRANCH_END
    points inside, in pairs at consecutive indices (the end of one piece, the start of

@@ -20,7 +20,7 @@ module wa_branch
       curve_case2_load, curve_variable, curve_equilibrium
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_separation, only: state_mean_gap
+   use wa_separation, only: state_mean_gap, md_no_contact_family
    implicit none
    private
 
@@ -200,6 +200,10 @@ contains
       type(state_type) :: starts(max_model_roots)
       integer :: n_starts, k
 
+      if (model == model_md .and. params%sigma0 > 0.0_wp) then
+         call no_contact_pieces(params, branch, status, errmsg)
+         if (status /= wa_ok) return
+      end if
       call model_roots(model, params, opts%a_start, starts, n_starts, status, errmsg)
       if (status /= wa_ok) return
       do k = 1, n_starts
@@ -211,6 +215,31 @@ contains
       call set_error(wa_numerical_error, "trace_branch: no piece of the curve reaches "// &
          "a* = 1/2", status, errmsg)
    end subroutine cohesive_branch
+
+   !> MD states without contact (zone case 0, a* = 0: a Dugdale zone |x*| < c* around the
+   !> crest, P* = -2 Sigma0 c*), as pieces of their own ahead of the contact curve: from the
+   !> first interaction (c* = 0, P* = 0) to where the crest gap closes and the family joins
+   !> the a* -> 0 end of the contact curve (wa_separation, md_no_contact_family; a second
+   !> piece where the crest gap reopens). P* falls monotonically along them, so under load
+   !> control their stability cannot change, and at the first interaction a tensile load
+   !> pulls the surfaces into the growing zone: none is stable under load control.
+   subroutine no_contact_pieces(params, branch, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(inout) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, parameter :: n_samples = 41
+      type(state_type) :: states(n_samples)
+      integer :: piece, n, i
+      do piece = 1, 2
+         call md_no_contact_family(params, piece, states, n, status, errmsg)
+         if (status /= wa_ok) return
+         do i = 1, n
+            call append(branch, states(i), .false., merge(event_branch_end, event_none, &
+               i == 1 .or. i == n), 0)
+         end do
+      end do
+   end subroutine no_contact_pieces
 
    !> Has a traced piece already started at this start state, or ended on the start line
    !> (a piece returning to a* -> 0 stops at a* <= a_start) in the same zone case and c*?

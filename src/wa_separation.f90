@@ -388,7 +388,7 @@ contains
          state%p_star = -params%sigma0
          state%gbar = 1.0_wp + h00
       else
-         state%p_star = -2.0_wp*params%sigma0*c_star
+         state%p_star = 0.0_wp - 2.0_wp*params%sigma0*c_star     ! +0 at c* = 0
          state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*c_star)
       end if
    end subroutine md_no_contact_state
@@ -729,7 +729,8 @@ contains
          if (done) exit
          call brent_accept(solver, crest_of(params, x))
       end do
-      c0 = solver%b
+      ! the end of the final bracket where the crest gap is >= 0: the state there exists
+      c0 = merge(solver%b, solver%c, solver%fb >= 0.0_wp)
       if (done) then
          status = wa_ok
       else

@@ -21,9 +21,11 @@ def test_shapes_and_types(model):
     assert b.zone_case.dtype.kind == b.event.dtype.kind == "i"
     assert b.model == model and b.alpha == 0.3 and b.mu == 1.0
     assert np.all(np.isfinite(b.P_star))
-    assert np.all((b.a_star > 0) & (b.a_star <= 0.5))
+    contact = b.zone_case > 0                  # MD begins with its no-contact states (a* = 0)
+    assert np.all(b.a_star[contact] > 0) and np.all(b.a_star <= 0.5)
+    assert np.all(b.a_star[~contact] == 0)
     assert np.all((b.c_star >= b.a_star) & (b.c_star <= 0.5))
-    assert set(np.unique(b.zone_case)) <= {1, 2, 3}
+    assert set(np.unique(b.zone_case)) <= ({0, 1, 2, 3} if model == "md" else {1, 2, 3})
     assert set(np.unique(b.event)) <= {0, 1, 2, 8, 9}
     assert b.event[0] == b.event[-1] == 8
     np.testing.assert_array_equal(b.b_star, b.a_star + 0.4 * (b.c_star - b.a_star))
@@ -58,6 +60,8 @@ def test_points_are_equilibria(model, mu):
     b = wa.trace_branch(model, 0.3, mu)
     for i in range(1, len(b) - 1, 7):
         if b.event[i] == 2 or b.extremum[i] == 2:  # a switch, or a* turning back: roots merge
+            continue
+        if b.zone_case[i] == 0:                    # no contact: not a root at a* (a* = 0)
             continue
         loads = [s.P_star for s in wa.roots(model, 0.3, mu, b.a_star[i])]
         assert np.min(np.abs(np.subtract(loads, b.P_star[i]))) <= 1e-9 * max(

@@ -526,7 +526,8 @@ class Branch:
     b_star : numpy.ndarray of float
         b* = a* + 0.4 (c* - a*) (the paper's Fig. 5 abscissa).
     zone_case : numpy.ndarray of int
-        1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact.
+        0: no contact (MD: a* = 0, Dugdale zone |x*| < c*), 1: a* < c* < 1/2, 2: c* = 1/2,
+        3: full contact.
     stable : numpy.ndarray of bool
         True where the state is stable under load control (case 2: dP*/da* > 0;
         case 1: the flag changes only at extrema of P*, not at a*-turns); False at folds.

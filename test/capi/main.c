@@ -358,8 +358,9 @@ static void test_branch_every_model(void) {
             "model %d: branch ends: a* %g .. %g, events %d %d", models[m], b.a[0],
             b.a[b.n - 1], b.e[0], b.e[b.n - 1]);
       for (i = 0; i < b.n; i++)
-         ok = ok && b.a[i] > 0 && b.a[i] <= 0.5 && b.c[i] >= b.a[i] && b.c[i] <= 0.5 &&
-              isfinite(b.p[i]) && b.z[i] >= 1 && b.z[i] <= 3 &&
+         ok = ok && (b.a[i] > 0 || (b.a[i] == 0 && b.z[i] == WA_ZONE_NO_CONTACT)) &&
+              b.a[i] <= 0.5 && b.c[i] >= b.a[i] && b.c[i] <= 0.5 &&
+              isfinite(b.p[i]) && b.z[i] >= 0 && b.z[i] <= 3 &&
               (b.s[i] == 0 || b.s[i] == 1) && b.e[i] >= WA_EVENT_NONE &&
               b.e[i] <= WA_EVENT_A_TURN && (b.e[i] != WA_EVENT_FOLD || b.s[i] == 0);
       CHECK(ok, "model %d: every point well formed", models[m]);

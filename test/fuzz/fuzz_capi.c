@@ -609,6 +609,7 @@ static char *MSG(const call_t *c) { return c->msg_null ? NULL : (char *)mbuf + G
 
 static int ok_state(double a, double cs, int z) {
    if (!(a >= 0 && a <= 0.5 && cs >= a && cs <= 0.5)) return 0;
+   if (z == WA_ZONE_NO_CONTACT) return a == 0;
    if (z == WA_ZONE_INSIDE) return cs < 0.5;
    if (z == WA_ZONE_WHOLE_PERIOD) return cs == 0.5 && a < 0.5;
    if (z == WA_ZONE_FULL_CONTACT) return a == 0.5 && cs == 0.5;
