@@ -104,6 +104,8 @@ def test_invalid_argument_before_any_task(executors):
 def test_chunk_size_checked(bad):
     with pytest.raises(wa.InvalidArgumentError, match="chunk_size"):
         wa.critical_forces("dw", 0.3, [1.0, 2.0], chunk_size=bad)
+    with pytest.raises(wa.InvalidArgumentError, match="chunk_size"):
+        wa.critical_forces("dw", 0.3, 1.0, chunk_size=bad)
 
 
 def test_serial_chunks_unchanged(monkeypatch):

@@ -892,11 +892,11 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
            np.full(mu_f.size, -1, dtype=np.int32), np.full(mu_f.size, -1, dtype=np.int32),
            np.zeros(mu_f.size, dtype=np.int32))
     messages = {}
+    size = _chunk_size(chunk_size, executor, _SWEEP_SECONDS[code], _CHUNK_SWEEP)
     if mu_f.size == 1:
         _sweep_chunk(code, float(alpha_f[0]), mu_f, np.zeros(1, dtype=np.intp), out,
                      messages, errors, shape)
     elif mu_f.size:
-        size = _chunk_size(chunk_size, executor, _SWEEP_SECONDS[code], _CHUNK_SWEEP)
         values, inverse = np.unique(alpha_f, return_inverse=True)
         if errors == "raise" and (values.size > 1 or mu_f.size > size):
             _check_sweep_arguments(code, alpha_f, mu_f, shape)   # all before any work
