@@ -5,7 +5,9 @@
 #             (when `python3 -m venv` cannot work) and python3-dev (Python.h, for f2py);
 #   pip:      into the project's virtual environment .venv (git-ignored), never into the
 #             system Python (Debian's python3 is EXTERNALLY-MANAGED, PEP 668): fpm; for
-#             the Python parts also numpy, meson, meson-python, ninja, pytest and ford.
+#             the Python parts also numpy, meson, meson-python, ninja, pytest, ford, and
+#             dask and distributed (python/tests/test_parallel.py runs critical_forces on
+#             a dask LocalCluster).
 # Usage: bash tools/setup.sh          everything (build, tests, API reference)
 #        bash tools/setup.sh --run    only what building and running the library needs
 # Afterwards the tools are in .venv/bin (tools/test.sh puts it first on PATH).
@@ -49,7 +51,8 @@ fi
 # Requirements (pip does nothing, and asks no index, for those already satisfied).
 pip_reqs=("fpm>=0.12")
 if [ "$mode" = all ]; then
-   pip_reqs+=("numpy>=1.26" "meson>=1.1" "meson-python>=0.15" "ninja" "pytest" "ford>=7.0,<8")
+   pip_reqs+=("numpy>=1.26" "meson>=1.1" "meson-python>=0.15" "ninja" "pytest" "ford>=7.0,<8"
+             "dask>=2024.1" "distributed>=2024.1")
 fi
 if ! .venv/bin/python - "${pip_reqs[@]}" 2>/dev/null <<'EOF'
 # exit 0 when every requirement is installed in .venv at a satisfying version

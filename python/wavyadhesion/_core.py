@@ -13,6 +13,7 @@ from typing import NamedTuple, Optional
 import numpy as np
 
 from . import _wa_f2py as _f
+from ._parallel import iter_chunks, points_per_chunk
 
 __all__ = [
     "MODELS",
@@ -73,6 +74,12 @@ _ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = 1e-12, 1e12, 1e-100, 1e100
 # smaller are one facade call, exactly as before chunking.
 _CHUNK_POINTS = 4096
 _CHUNK_SWEEP = 16
+
+# On an executor a chunk holds at least _parallel.chunk_seconds() of work (scheduling
+# overhead < 5 %), estimated with the cheapest measured cost of one critical_forces point
+# (s, by model code; mu from 0.01 to 30, alpha 0.1 to 3: Westergaard/JKR ~0.03 ms,
+# DW 0.29-0.61 ms, MD 1.4-3.2 ms; python/benchmarks/bench_parallel.py --costs).
+_SWEEP_SECONDS = {0: 2.5e-5, 1: 2.5e-5, 2: 2.9e-4, 3: 1.4e-3}
 
 #: Event codes of branch points and load-path events (SPEC section 7, include/wavyadhesion.h).
 EVENTS = {
@@ -816,7 +823,8 @@ def load_path(model, alpha, mu) -> LoadPath:
                     MECHANISMS[int(fc_m)], MECHANISMS[int(pf_m)], float(area))
 
 
-def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForces:
+def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
+                    chunk_size=None) -> CriticalForces:
     """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
     unloading), vectorised over mu and broadcast with alpha.
 
@@ -838,6 +846,15 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
         before any work). "nan": compute every point; where one fails (or is invalid),
         P_fc and P_pf are NaN, the mechanisms -1, and ``status`` and ``messages`` say
         why; nothing is raised for a point.
+    executor : concurrent.futures.Executor, optional
+        Runs the chunks in parallel: a ``ThreadPoolExecutor`` (the GIL is released), a
+        ``ProcessPoolExecutor``, a dask.distributed ``client.get_executor()``, an
+        ``mpi4py.futures.MPIPoolExecutor``. The results are the serial ones bit for bit.
+        None (default): serial, Ctrl-C between chunks.
+    chunk_size : int, optional
+        Points per chunk (a chunk is one task; each alpha in it one facade call).
+        Default: 16 serially; on an executor enough points for 10 ms (threads), 50 ms
+        (processes, MPI) or 200 ms (dask) of work, so that scheduling costs < 5 %.
 
     Returns
     -------
@@ -876,17 +893,20 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise") -> CriticalForce
            np.full(mu_f.size, -1, dtype=np.int32), np.full(mu_f.size, -1, dtype=np.int32),
            np.zeros(mu_f.size, dtype=np.int32))
     messages = {}
+    size = _chunk_size(chunk_size, executor, _SWEEP_SECONDS[code], _CHUNK_SWEEP)
     if mu_f.size == 1:
         _sweep_chunk(code, float(alpha_f[0]), mu_f, np.zeros(1, dtype=np.intp), out,
                      messages, errors, shape)
     elif mu_f.size:
         values, inverse = np.unique(alpha_f, return_inverse=True)
-        if errors == "raise" and (values.size > 1 or mu_f.size > _CHUNK_SWEEP):
+        if errors == "raise" and (values.size > 1 or mu_f.size > size):
             _check_sweep_arguments(code, alpha_f, mu_f, shape)   # all before any work
-        for k, value in enumerate(values):
-            idx = np.flatnonzero(inverse.reshape(-1) == k)
-            for sl in _chunks(idx.size, _CHUNK_SWEEP):   # Ctrl-C is seen between chunks
-                _sweep_chunk(code, float(value), mu_f, idx[sl], out, messages, errors, shape)
+        chunks = _sweep_pieces(values, inverse.reshape(-1), size)
+        tasks = [(code, [(value, mu_f[idx]) for value, idx in chunk]) for chunk in chunks]
+        # in order; serially Ctrl-C is seen between chunks
+        for chunk, results in zip(chunks, iter_chunks(_sweep_task, tasks, executor)):
+            for (value, idx), result in zip(chunk, results):
+                _sweep_chunk(code, value, mu_f, idx, out, messages, errors, shape, result)
     p_fc, p_pf, fc_m, pf_m, status = out
     return CriticalForces(_shaped(p_fc, shape), _shaped(p_pf, shape), _shaped(fc_m, shape),
                           _shaped(pf_m, shape), _shaped(status, shape), messages)
@@ -906,12 +926,54 @@ def _check_sweep_arguments(code, alpha_f, mu_f, shape):
                 _raise(status, message, _where(i + 1, shape))
 
 
-def _sweep_chunk(code, alpha, mu_f, idx, out, messages, errors, shape):
-    """One facade call for the points `idx` (one alpha); failed points keep NaN, -1 and
-    their status; errors="raise" raises at the first one."""
+def _chunk_size(chunk_size, executor, seconds_per_point, serial):
+    """Points per chunk: `chunk_size` (validated), else `serial` without an executor,
+    else enough points for _parallel.chunk_seconds(executor) of work."""
+    if chunk_size is None:
+        if executor is None:
+            return serial
+        return points_per_chunk(executor, seconds_per_point, serial)
+    if isinstance(chunk_size, (bool, np.bool_)) or not isinstance(
+            chunk_size, (int, np.integer)) or chunk_size < 1:
+        raise InvalidArgumentError(f"chunk_size = {chunk_size!r} is not a positive integer",
+                                   _INVALID_ARGUMENT)
+    return int(chunk_size)
+
+
+def _sweep_pieces(values, inverse, size):
+    """The points grouped by alpha (values[inverse]) and cut into chunks of at most
+    `size`: each chunk a list of (alpha, indices) pieces, one facade call each."""
+    order = np.argsort(inverse, kind="stable")
+    ends = np.cumsum(np.bincount(inverse, minlength=values.size))
+    chunks, chunk, room, start = [], [], size, 0
+    for k, end in enumerate(ends):
+        while start < end:
+            take = min(room, int(end) - start)
+            chunk.append((float(values[k]), order[start:start + take]))
+            start, room = start + take, room - take
+            if room == 0:
+                chunks.append(chunk)
+                chunk, room = [], size
+    if chunk:
+        chunks.append(chunk)
+    return chunks
+
+
+def _sweep_task(task):
+    """Worker of critical_forces (module-level: picklable for processes, dask, MPI): the
+    facade's raw output for each (alpha, mu array) piece of one chunk."""
+    code, pieces = task
+    return [_f.fa_critical_sweep(code, alpha, np.ascontiguousarray(mu))
+            for alpha, mu in pieces]
+
+
+def _sweep_chunk(code, alpha, mu_f, idx, out, messages, errors, shape, result=None):
+    """One facade call for the points `idx` (one alpha), or its `result` computed by
+    _sweep_task; failed points keep NaN, -1 and their status; errors="raise" raises at
+    the first one."""
     p_fc, p_pf, fc_m, pf_m, status_out = out
-    fc, pf, fm, pm, rs, ifail, status, message = _f.fa_critical_sweep(
-        code, alpha, np.ascontiguousarray(mu_f[idx]))
+    fc, pf, fm, pm, rs, ifail, status, message = result if result is not None else (
+        _f.fa_critical_sweep(code, alpha, np.ascontiguousarray(mu_f[idx])))
     if status == _INVALID_ARGUMENT and (rs == _INVALID_ARGUMENT).all():
         # an argument was refused and nothing computed
         if errors == "raise":
