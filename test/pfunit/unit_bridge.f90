@@ -12,6 +12,7 @@ module unit_bridge
    use test_branch, only: collect_branch
    use test_robustness, only: collect_robustness
    use test_sweep, only: collect_sweep
+   use test_map, only: collect_map
    implicit none
    private
 
@@ -33,6 +34,7 @@ contains
       case ("branch"); call collect_branch(tests)
       case ("robustness"); call collect_robustness(tests)
       case ("sweep"); call collect_sweep(tests)
+      case ("map"); call collect_map(tests)
       case default; allocate (tests(0))
       end select
    end subroutine collect
