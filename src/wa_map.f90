@@ -259,18 +259,23 @@ contains
       end do
    end function first_good
 
-   !> A curve of this kind passes alpha(j) between mu_a and mu_b already.
+   !> A curve of this kind (or its reverse) passes alpha(j) between mu_a and mu_b already,
+   !> or within 3e-3 relative of them: a mechanism that flickers near a boundary (201 does,
+   !> over 1e-5 to 1e-3 relative) must not start a second copy of the curve.
    pure logical function known(map, j, which, ma, mb, mu_a, mu_b)
       type(map_type), intent(in) :: map
       integer, intent(in) :: j, which, ma, mb
       real(wp), intent(in) :: mu_a, mu_b
+      real(wp), parameter :: band = 3.0e-3_wp
       integer :: c, p
       known = .false.
       do c = 1, map%n_boundaries
          associate (b => map%boundary(c))
-            if (b%code /= boundary_code(which, ma, mb)) cycle
+            if (b%code /= boundary_code(which, ma, mb) .and. &
+               b%code /= boundary_code(which, mb, ma)) cycle
             do p = 1, b%n
-               if (b%alpha(p) == map%alpha(j) .and. b%mu(p) >= mu_a .and. b%mu(p) <= mu_b) then
+               if (b%alpha(p) /= map%alpha(j)) cycle
+               if (b%mu(p) >= mu_a*(1.0_wp - band) .and. b%mu(p) <= mu_b*(1.0_wp + band)) then
                   known = .true.
                   return
                end if
@@ -316,6 +321,7 @@ contains
       curve%mu = [bwd%mu(bwd%n:1:-1), fwd%mu(2:fwd%n)]
       curve%start_kind = bwd%end_kind
       curve%end_kind = fwd%end_kind
+      if (duplicate(map, curve)) return
       map%boundary = [map%boundary, curve]
       map%n_boundaries = map%n_boundaries + 1
       if (fwd%end_kind == map_end_inside) call scan_near_end(k_fwd, +1, fwd)
@@ -345,6 +351,28 @@ contains
       end subroutine scan_near_end
    end subroutine new_curve
 
+   !> The curve repeats one found already: same code, within 3e-3 relative in mu at three
+   !> or more common alpha (a copy started inside a flickering band).
+   pure logical function duplicate(map, curve)
+      type(map_type), intent(in) :: map
+      type(map_boundary), intent(in) :: curve
+      integer :: c, p, q, n_same
+      duplicate = .false.
+      do c = 1, map%n_boundaries
+         if (map%boundary(c)%code /= curve%code) cycle
+         n_same = 0
+         do p = 1, curve%n
+            do q = 1, map%boundary(c)%n
+               if (map%boundary(c)%alpha(q) /= curve%alpha(p)) cycle
+               if (abs(map%boundary(c)%mu(q) - curve%mu(p)) <= 3.0e-3_wp*curve%mu(p)) &
+                  n_same = n_same + 1
+            end do
+         end do
+         duplicate = n_same >= min(3, curve%n)
+         if (duplicate) return
+      end do
+   end function duplicate
+
    !> Continue the curve through (alpha(j), exp(t0)) over the grid in direction dir; the
    !> points come out in the order visited (the start point first). Steps in ln alpha
    !> adapt: a failed step is halved (the point in between, refined, joins the curve),
@@ -360,14 +388,16 @@ contains
       real(wp) :: x(max_points), y(max_points), a(max_points)
       real(wp) :: t, err, pred, h, xt, delta
       integer :: n, k, kind, iter
-      logical :: on_grid
+      logical :: on_grid, approaching, refined(max_points)
 
       n = 1
       x(1) = log(alpha(j))
       a(1) = alpha(j)
       y(1) = t0
+      refined(1) = .true.
       err = 1.0e-3_wp
       h = 0.01_wp
+      approaching = .false.
       curve%end_kind = map_end_grid
       k = j + dir
       k_last = j
@@ -379,10 +409,13 @@ contains
          pred = extrapolate(x, y, n, xt)
          delta = max(4.0_wp*err, 1.0e-7_wp)
          if (n < 3) delta = 1.0e-3_wp
-         call locate(tr, exp(xt), pred, delta, t, kind)
+         ! off the grid after a failed step only whether the curve is there matters
+         call locate(tr, exp(xt), pred, delta, t, kind, &
+            bracket_only=approaching .and. .not. on_grid)
          if (kind /= -1) then
             h = 0.5_wp*min(h, abs(xt - x(n)))
             curve%end_kind = kind
+            approaching = .true.
             if (h < tol_alpha*max(1.0_wp, abs(x(n)))) exit
             cycle
          end if
@@ -391,16 +424,25 @@ contains
          x(n) = xt
          a(n) = merge(alpha(k), exp(xt), on_grid)
          y(n) = t
-         if (n >= 4) err = abs(t - pred)
+         refined(n) = .not. (approaching .and. .not. on_grid)
+         if (n >= 4 .and. refined(n)) err = abs(t - pred)
          h = 2.0_wp*h
          if (on_grid) then
             k_last = k
             k = k + dir
+            approaching = .false.
          end if
       end do
-      curve%n = n
-      curve%alpha = a(1:n)
-      curve%mu = exp(y(1:n))
+      if (.not. refined(n)) then            ! the last point found before the end, refined
+         call locate(tr, exp(x(n)), y(n), 1.0e-6_wp, t, kind)
+         if (kind == -1) then
+            y(n) = t
+            refined(n) = .true.
+         end if
+      end if
+      curve%n = count(refined(1:n))
+      curve%alpha = pack(a(1:n), refined(1:n))
+      curve%mu = exp(pack(y(1:n), refined(1:n)))
    end subroutine continue_curve
 
    !> ln mu at x = ln alpha from the last (up to) three points: a quadratic.
