@@ -27,7 +27,8 @@ program wavyadhesion_cli
       if (.not. ok) stop 1, quiet=.true.
       stop
    end if
-   if (opts%command /= "critical" .or. si_given(opts)) call resolve_params(opts, params)
+   if ((opts%command /= "critical" .and. opts%command /= "map") .or. si_given(opts)) &
+      call resolve_params(opts, params)
    call open_sink(out, opts%output, ok)
    if (.not. ok) then
       write (error_unit, '(a)') "Try 'wavyadhesion --help'."
@@ -44,6 +45,8 @@ program wavyadhesion_cli
       call run_path(opts, params)
    case ("critical")
       call run_critical(opts, params, rows_failed)
+   case ("map")
+      call run_map(opts)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
@@ -267,6 +270,72 @@ contains
          n_failed, " of ", size(p_fc), " rows failed (written with NaN forces); exit status 1"
    end subroutine run_critical
 
+   !> map: the boundary curves of the adhesion map, rows "boundary alpha mu" (boundary:
+   !> the integer code, meanings in the header), each curve in increasing alpha.
+   subroutine run_map(opts)
+      type(cli_options), intent(in) :: opts
+      real(wp), allocatable :: alpha(:), mu(:)
+      type(map_type) :: map
+      character(len=256) :: msg
+      character(len=400), allocatable :: notes(:)
+      character(len=*), parameter :: ends(0:3) = [character(len=24) :: "grid edge", &
+         "inside (meets/turns)", "leaves the mu range", "load path fails"]
+      integer :: status, c, i, k
+      logical :: seen
+
+      alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(i - 1, wp)/199.0_wp), i = 1, 200)]
+      mu = [1.0e-3_wp, 1.0e3_wp]
+      if (allocated(opts%alpha)) alpha = opts%alpha
+      if (allocated(opts%mu)) mu = opts%mu
+      if (opts%model /= model_dw .and. opts%model /= model_md) &
+         call usage_error("map: --model must be dw or md (westergaard and jkr have one "// &
+         "mechanism each)")
+      if (size(mu) < 2) call usage_error("map: --mu-range needs N >= 2")
+      msg = ""
+      call adhesion_map(opts%model, alpha, mu(1), mu(size(mu)), max(size(mu), 60), map, &
+         status, msg)
+      if (status == wa_invalid_argument) call usage_error("map: "//trim(msg))
+      if (status /= wa_ok) call numerical_error(status, msg)
+      allocate (notes(0))
+      do c = 1, map%n_boundaries
+         seen = .false.
+         do k = 1, c - 1
+            seen = seen .or. map%boundary(k)%code == map%boundary(c)%code
+         end do
+         if (.not. seen) notes = [character(len=400) :: notes, "boundary "// &
+            int_text(map%boundary(c)%code)//" = "//boundary_meaning(map%boundary(c)%code)]
+      end do
+      notes = [character(len=400) :: notes, &
+         "boundary code = 100*which + 10*(mechanism below) + (mechanism above) in mu;", &
+         "which 1 full contact, 2 pull-off; mechanism 0 gradual, 1 jump case 1, 2 jump "// &
+         "case 2, 3 snap at P=0", "each point located to 2e-9 relative in mu"]
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            notes = [character(len=400) :: notes, "curve "//int_text(c)//" ("// &
+               int_text(b%code)//"): starts alpha "//format_real(b%alpha(1))//" mu "// &
+               format_real(b%mu(1))//" ["//trim(ends(b%start_kind))//"], ends alpha "// &
+               format_real(b%alpha(b%n))//" mu "//format_real(b%mu(b%n))//" ["// &
+               trim(ends(b%end_kind))//"]"]
+         end associate
+      end do
+      call write_header(out, opts%format, "adhesion map: mechanism boundaries mu_b(alpha)", &
+         model_name(opts%model), columns="boundary alpha mu", notes=notes)
+      do c = 1, map%n_boundaries
+         do i = 1, map%boundary(c)%n
+            call write_row_ints_first(out, opts%format, [map%boundary(c)%code], &
+               [map%boundary(c)%alpha(i), map%boundary(c)%mu(i)])
+         end do
+      end do
+   end subroutine run_map
+
+   pure function int_text(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function int_text
+
    !> A header line saying how many rows failed (none when every row succeeded).
    function failure_note(n_failed, n_rows) result(notes)
       integer, intent(in) :: n_failed, n_rows
@@ -360,7 +429,8 @@ contains
       character(len=1) :: sep
       character(len=32) :: head
       sep = merge(",", " ", format == "csv")
-      write (head, '(i0,a,i0)') ints(1), sep, ints(2)
+      write (head, '(i0)') ints(1)
+      if (size(ints) > 1) write (head, '(i0,a,i0)') ints(1), sep, ints(2)
       call write_row(out, format, reals, prefix=trim(head)//sep)
    end subroutine write_row_ints_first
 
@@ -383,7 +453,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(34) = [character(len=100) :: &
+      character(len=100), parameter :: text(39) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -398,13 +468,18 @@ contains
          "            pull-off", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
          "            --mu-range LO:HI:N[:log]", &
+         "  map       adhesion map (dw, md): boundaries between mechanisms as rows", &
+         "            'boundary alpha mu' (--alpha-range, default 0.01:10:200:log;", &
+         "            --mu-range, default 1e-3:1e3:60:log)", &
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &
          "  --alpha A          Johnson's parameter, in [1e-12, 1e12] (default 0.3)", &
          "  --mu U             transition parameter, 0 or in [1e-100, 1e100] (default 1)", &
          "  --mu-range LO:HI:N[:log]", &
-         "                     N values of mu from LO to HI (critical only; not with --mu)", &
+         "                     N values of mu from LO to HI (critical, map; not with --mu)", &
+         "  --alpha-range LO:HI:N[:log]", &
+         "                     N values of alpha (map only; not with --alpha)", &
          "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &

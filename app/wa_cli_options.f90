@@ -47,9 +47,10 @@ contains
          end if
       end if
       select case (opts%command)
-      case ("point", "branch", "path", "critical")
+      case ("point", "branch", "path", "critical", "map")
       case default
-         error = "unknown subcommand '"//opts%command//"' (expected point, branch, path or critical)"
+         error = "unknown subcommand '"//opts%command// &
+            "' (expected point, branch, path, critical or map)"
          return
       end select
       do while (i <= n)
@@ -101,8 +102,15 @@ contains
       integer :: k
       if (given(opts, "--mu") .and. given(opts, "--mu-range")) then
          error = "--mu and --mu-range cannot be used together (give one)"
-      else if (given(opts, "--mu-range") .and. opts%command /= "critical") then
-         error = "--mu-range is only for the critical subcommand"
+      else if (given(opts, "--mu-range") .and. opts%command /= "critical" .and. &
+         opts%command /= "map") then
+         error = "--mu-range is only for the critical and map subcommands"
+      else if (given(opts, "--alpha-range") .and. opts%command /= "map") then
+         error = "--alpha-range is only for the map subcommand"
+      else if (given(opts, "--alpha") .and. given(opts, "--alpha-range")) then
+         error = "--alpha and --alpha-range cannot be used together (give one)"
+      else if (opts%command == "map" .and. (given(opts, "--mu") .or. si_given(opts))) then
+         error = "map covers a range of mu: use --mu-range LO:HI:N:log, not --mu or SI input"
       else if (given(opts, "--a-star") .and. opts%command /= "point") then
          error = "--a-star is only for the point subcommand"
       end if
@@ -161,6 +169,7 @@ contains
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
+      case ("--alpha-range"); call parse_mu_range(val, opts%alpha, error, "--alpha-range")
       case ("--format")
          if (val /= "table" .and. val /= "csv") then
             error = "--format: '"//val//"' is not one of table, csv"
@@ -210,10 +219,13 @@ contains
    end subroutine parse_real_list
 
    !> LO:HI:N[:log] -> N values of mu from LO to HI, linear or log-spaced.
-   subroutine parse_mu_range(text, values, error)
+   subroutine parse_mu_range(text, values, error, option)
       character(len=*), intent(in) :: text
       real(wp), allocatable, intent(out) :: values(:)
       character(len=:), allocatable, intent(out) :: error
+      !> The option's name in messages (default --mu-range)
+      character(len=*), intent(in), optional :: option
+      character(len=:), allocatable :: name
       character(len=*), parameter :: form = "expected LO:HI:N[:log] with 0 <= LO <= HI "// &
          "(LO > 0 with :log) and N an integer in [1, 100000]"
       character(len=:), allocatable :: part(:)
@@ -221,18 +233,20 @@ contains
       logical :: logscale
       integer :: n, i, ios
 
+      name = "--mu-range"
+      if (present(option)) name = option
       call split(text, ":", part)
       if (size(part) < 3 .or. size(part) > 4) then
-         error = "--mu-range: '"//text//"' is not LO:HI:N[:log] ("//form//")"
+         error = name//": '"//text//"' is not LO:HI:N[:log] ("//form//")"
          return
       end if
       logscale = size(part) == 4
       if (logscale .and. trim(part(min(4, size(part)))) /= "log") then
-         error = "--mu-range: '"//trim(part(4))//"' is not 'log' ("//form//")"
+         error = name//": '"//trim(part(4))//"' is not 'log' ("//form//")"
          return
       end if
-      call parse_real(trim(part(1)), "--mu-range LO", lo, error, form)
-      if (.not. allocated(error)) call parse_real(trim(part(2)), "--mu-range HI", hi, error, &
+      call parse_real(trim(part(1)), name//" LO", lo, error, form)
+      if (.not. allocated(error)) call parse_real(trim(part(2)), name//" HI", hi, error, &
          form)
       if (allocated(error)) return
       n = 0
@@ -240,11 +254,11 @@ contains
       if (len_trim(part(3)) > 0 .and. len_trim(part(3)) <= 6 .and. &
          verify(trim(part(3)), "0123456789") == 0) read (part(3), *, iostat=ios) n
       if (ios /= 0 .or. n < 1 .or. n > max_values) then
-         error = "--mu-range: N = '"//trim(part(3))//"' is not an integer in [1, 100000]"
+         error = name//": N = '"//trim(part(3))//"' is not an integer in [1, 100000]"
       else if (.not. (lo >= 0.0_wp .and. hi >= lo)) then
-         error = "--mu-range: need 0 <= LO <= HI ("//form//")"
+         error = name//": need 0 <= LO <= HI ("//form//")"
       else if (logscale .and. lo <= 0.0_wp) then
-         error = "--mu-range: LO must be > 0 with :log ("//form//")"
+         error = name//": LO must be > 0 with :log ("//form//")"
       end if
       if (allocated(error)) return
       allocate (values(n))

@@ -28,6 +28,7 @@ program benchmark
    write (*, '(a)') "wavyadhesion "//wa_version//" benchmark (one core; medians over repeats)"
    write (*, '(a)') "target (SPEC 9): DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"
    write (*, '(a)') "                 MD branch <= 20 ms, critical forces 3 alpha x 200 mu (DW) <= 1 s"
+   write (*, '(a)') "target (issue 13): adhesion map 200 alpha, DW <= 2 s, MD <= 20 s"
    call bench_points(model_dw, 0.3_wp, 1.0_wp)
    call bench_points(model_dw, 0.3_wp, 1000.0_wp)
    call bench_points(model_dw, 1.0_wp, 0.1_wp)
@@ -39,8 +40,30 @@ program benchmark
    call bench_branch(model_md, 0.3_wp, 1.0_wp)
    call bench_branch(model_md, 0.3_wp, 5.0_wp)
    call bench_critical()
+   call bench_map(model_dw)
+   call bench_map(model_md)
 
 contains
+
+   !> The adhesion map: 200 log alpha in [0.01, 10], mu in [1e-3, 1e3] (issue 13 targets:
+   !> DW <= 2 s, MD <= 20 s). One run: the map is deterministic.
+   subroutine bench_map(model)
+      integer, intent(in) :: model
+      type(map_type) :: map
+      real(wp) :: alpha(200), t0, t
+      integer :: j, status, n_points
+      alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(j - 1, wp)/199.0_wp), j = 1, 200)]
+      t0 = seconds()
+      call adhesion_map(model, alpha, 1.0e-3_wp, 1.0e3_wp, 60, map, status)
+      t = seconds() - t0
+      n_points = 0
+      do j = 1, map%n_boundaries
+         n_points = n_points + map%boundary(j)%n
+      end do
+      write (*, '(a,a,a,f8.3,a,i0,a,i0,a,i0,a,i0)') "map ", name(model), &
+         " 200 alpha (0.01..10) x mu 1e-3..1e3: ", t, " s  (", map%n_boundaries, &
+         " curves, ", n_points, " points, ", map%n_paths, " load paths)  status ", status
+   end subroutine bench_map
 
    real(wp) function seconds()
       integer(int64) :: count, rate

@@ -214,6 +214,26 @@ const char *wa_status_message(int status);
    NUL-terminated string, never NULL. Do not free it. */
 const char *wa_version(void);
 
+/* The adhesion map of the (alpha, mu) plane (Fortran adhesion_map, module wa_map):
+   the boundary points where the full-contact or pull-off mechanism changes, located to
+   2e-9 relative in mu over [mu_lo, mu_hi], for model WA_MODEL_DW or WA_MODEL_MD and the
+   n_alpha strictly increasing values alpha[] (each in [WA_ALPHA_MIN, WA_ALPHA_MAX]).
+   Points come curve after curve, each curve in increasing alpha (it may add points
+   between the given alpha, where it starts or ends). boundary_code[i] = 100*which +
+   10*(mechanism below) + (mechanism above) in mu, which 1 full contact, 2 pull-off,
+   mechanisms WA_MECHANISM_*: e.g. 101 full contact: gradual -> jump case 1, 103 full
+   contact: gradual -> snap at P=0, 113 full contact: jump case 1 -> snap, 201 pull-off:
+   gradual -> jump case 1, 202 pull-off: gradual -> jump case 2, 212 pull-off: jump
+   case 1 -> jump case 2 (and the reverses, e.g. 210, 221).
+   *n_out receives the number of points; when it exceeds capacity, the first capacity
+   points are written and WA_CAPACITY_TOO_SMALL is returned. On any other failure
+   (WA_INVALID_ARGUMENT: another model, n_alpha < 1, alpha not increasing, mu_lo >=
+   mu_hi, NULL pointers) *n_out = 0 when n_out is not NULL and the arrays are not
+   written. Takes about 1 s (DW) to 10 s (MD) per 100 alpha. */
+int wa_adhesion_map(int model, int n_alpha, const double *alpha, double mu_lo, double mu_hi,
+                    int capacity, int *boundary_code, double *alpha_out, double *mu_out,
+                    int *n_out);
+
 #ifdef __cplusplus
 }
 #endif

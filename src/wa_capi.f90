@@ -20,6 +20,7 @@ module wa_capi
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
    use wa_release, only: wa_version
+   use wa_map, only: map_type, adhesion_map
    implicit none
    private
 
@@ -29,6 +30,7 @@ module wa_capi
       capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
       capi_critical_sweep_msg, capi_critical_sweep_status
    public :: capi_version
+   public :: capi_adhesion_map
 
    !> Length of one status text, NUL included.
    integer, parameter :: text_len = 32
@@ -977,5 +979,69 @@ contains
       end do
       out(n + 1) = c_null_char
    end subroutine copy_message
+
+   !> int wa_adhesion_map(model, n_alpha, alpha[], mu_lo, mu_hi, capacity,
+   !> boundary_code[], alpha_out[], mu_out[], *n_out): the boundary points of the adhesion
+   !> map (wa_map), curve after curve, each curve in increasing alpha. *n_out receives the
+   !> number of points; when it exceeds capacity the first `capacity` are written and
+   !> WA_CAPACITY_TOO_SMALL is returned. On any other failure *n_out = 0 (when n_out is
+   !> not NULL) and the arrays are not written.
+   function capi_adhesion_map(model, n_alpha, alpha, mu_lo, mu_hi, capacity, boundary_code, &
+         alpha_out, mu_out, n_out) result(status) bind(C, name="wa_adhesion_map")
+      !> WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Number of alpha values, >= 1
+      integer(c_int), value, intent(in) :: n_alpha
+      !> const double[n_alpha]: strictly increasing alpha values
+      type(c_ptr), value, intent(in) :: alpha
+      !> The mu range, 0 < mu_lo < mu_hi
+      real(c_double), value, intent(in) :: mu_lo, mu_hi
+      !> Length of the three output arrays, >= 0 (they may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> int[capacity]: receives the boundary code of each point
+      type(c_ptr), value, intent(in) :: boundary_code
+      !> double[capacity]: receive alpha and mu of each point
+      type(c_ptr), value, intent(in) :: alpha_out, mu_out
+      !> int *: receives the number of points
+      type(c_ptr), value, intent(in) :: n_out
+      integer(c_int) :: status
+      integer(c_int), pointer :: n_ptr, codes(:)
+      real(c_double), pointer :: a_in(:), a_out(:), m_out(:)
+      type(map_type) :: map
+      integer :: stat, c, p, n
+      character(len=msg_len) :: msg
+
+      msg = ""
+      if (c_associated(n_out)) then
+         call c_f_pointer(n_out, n_ptr)
+         n_ptr = 0
+      end if
+      status = int(wa_invalid_argument, c_int)
+      if (.not. c_associated(n_out) .or. n_alpha < 1 .or. .not. c_associated(alpha) .or. &
+         capacity < 0) return
+      if (capacity > 0 .and. .not. (c_associated(boundary_code) .and. &
+         c_associated(alpha_out) .and. c_associated(mu_out))) return
+      call c_f_pointer(alpha, a_in, [n_alpha])
+      call adhesion_map(int(model), a_in, mu_lo, mu_hi, 60, map, stat, msg)
+      status = int(stat, c_int)
+      if (stat /= wa_ok) return
+      if (capacity > 0) then
+         call c_f_pointer(boundary_code, codes, [capacity])
+         call c_f_pointer(alpha_out, a_out, [capacity])
+         call c_f_pointer(mu_out, m_out, [capacity])
+      end if
+      n = 0
+      do c = 1, map%n_boundaries
+         do p = 1, map%boundary(c)%n
+            n = n + 1
+            if (n > capacity) cycle
+            codes(n) = int(map%boundary(c)%code, c_int)
+            a_out(n) = map%boundary(c)%alpha(p)
+            m_out(n) = map%boundary(c)%mu(p)
+         end do
+      end do
+      n_ptr = int(n, c_int)
+      if (n > capacity) status = int(wa_capacity_too_small, c_int)
+   end function capi_adhesion_map
 
 end module wa_capi

@@ -24,6 +24,8 @@ module wavyadhesion
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
+   use wa_map, only: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
+      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
    implicit none
    private
 
@@ -49,6 +51,8 @@ module wavyadhesion
    public :: path_type, load_path, critical_forces, critical_sweep, mechanism_change, &
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap
+   public :: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
+      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
 
    public :: wa_version
 

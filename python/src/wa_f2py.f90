@@ -572,3 +572,78 @@ subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_m
    end if
    status = int(stat, c_int)
 end subroutine fa_critical_sweep
+
+!> The adhesion map (wa_map's adhesion_map): the boundary points flattened curve after
+!> curve (code, alpha, mu, curve index from 1, start/end kinds per point's curve) and the
+!> region grids. n_out may exceed capacity (then status = wa_capacity_too_small and only
+!> capacity points are written).
+subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, scan_every, &
+      code, alpha_out, mu_out, curve, end_kinds, n_out, mu_grid, fc_region, pf_region, &
+      n_paths, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_map, only: map_type, adhesion_map
+   implicit none
+   !> Number of alpha values, >= 1
+   integer(c_int), intent(in) :: n_alpha
+   !> Number of log-spaced mu values of the region grid, >= 2
+   integer(c_int), intent(in) :: n_mu
+   !> Length of the point outputs
+   integer(c_int), intent(in) :: capacity
+   !> Model constant: 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Strictly increasing alpha values
+   real(c_double), intent(in) :: alpha(n_alpha)
+   !> The mu range
+   real(c_double), intent(in) :: mu_lo, mu_hi
+   !> The discovery scan runs at every scan_every-th alpha
+   integer(c_int), intent(in) :: scan_every
+   !> Boundary code, alpha, mu and curve index (from 1) of each point
+   integer(c_int), intent(out) :: code(capacity)
+   real(c_double), intent(out) :: alpha_out(capacity), mu_out(capacity)
+   integer(c_int), intent(out) :: curve(capacity)
+   !> Start and end kind of each point's curve
+   integer(c_int), intent(out) :: end_kinds(2, capacity)
+   !> Number of points (may exceed capacity)
+   integer(c_int), intent(out) :: n_out
+   !> The mu grid and the mechanisms at (mu, alpha)
+   real(c_double), intent(out) :: mu_grid(n_mu)
+   integer(c_int), intent(out) :: fc_region(n_mu, n_alpha), pf_region(n_mu, n_alpha)
+   !> Load paths computed
+   integer(c_int), intent(out) :: n_paths
+   integer(c_int), intent(out) :: status
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(map_type) :: map
+   integer :: c, p, n, stat
+
+   message = ""
+   code = 0; alpha_out = 0; mu_out = 0; curve = 0; end_kinds = 0; mu_grid = 0
+   fc_region = -1; pf_region = -1; n_paths = 0
+   n = 0
+   call adhesion_map(int(model), alpha, mu_lo, mu_hi, int(n_mu), map, stat, message, &
+      scan_every=int(scan_every))
+   if (stat == wa_ok) then
+      mu_grid = map%mu
+      fc_region = map%fc_region
+      pf_region = map%pf_region
+      n_paths = map%n_paths
+      do c = 1, map%n_boundaries
+         do p = 1, map%boundary(c)%n
+            n = n + 1
+            if (n > capacity) cycle
+            code(n) = map%boundary(c)%code
+            alpha_out(n) = map%boundary(c)%alpha(p)
+            mu_out(n) = map%boundary(c)%mu(p)
+            curve(n) = c
+            end_kinds(:, n) = [map%boundary(c)%start_kind, map%boundary(c)%end_kind]
+         end do
+      end do
+      if (n > capacity) then
+         stat = wa_capacity_too_small
+         message = "adhesion_map: more boundary points than capacity"
+      end if
+   end if
+   n_out = int(n, c_int)
+   status = int(stat, c_int)
+end subroutine fa_adhesion_map

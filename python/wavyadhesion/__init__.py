@@ -22,6 +22,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 (matplotlib is imported only when one of them is called).
 """
 
+from ._map import AdhesionMap, Boundary, adhesion_map, boundary_meaning
 from ._core import (
     EVENTS,
     MECHANISMS,
@@ -58,6 +59,10 @@ __version__ = _dist_version("wavyadhesion")
 del _dist_version
 
 __all__ = [
+    "AdhesionMap",
+    "Boundary",
+    "adhesion_map",
+    "boundary_meaning",
     "EVENTS",
     "MECHANISMS",
     "MODELS",

@@ -247,3 +247,100 @@ def figures9_10(alphas=(0.3, 0.6, 1.0), mu=None, model="dw"):
 def _jkr_full_contact(alpha):
     """JKR P_fc* (the value the cohesive models reach at large mu)."""
     return float(critical_forces("jkr", alpha, 1.0).P_fc)
+
+
+#: Short names of the mechanisms in map labels.
+_MAP_SHORT = ("gradual", "jump c1", "jump c2", "snap")
+
+
+def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
+    """Draw an :class:`~wavyadhesion.AdhesionMap` in the style of Johnson and Greenwood's
+    map: log axes (alpha horizontal, mu vertical), one shade per region (full-contact and
+    pull-off mechanism pair, labelled), the boundary curves as sharp lines (full contact
+    solid, pull-off dashed), and, when the map holds forces (``forces=True``), the region
+    where Westergaard predicts both critical forces within 1 % (hatched), the edge of the
+    region where JKR's P_fc is within 1 % (thick grey line; JKR's pull-off, -inf, is
+    wrong everywhere) and contours of -P_pf (thin, labelled).
+
+    Returns the figure.
+    """
+    plt = _pyplot()
+    from matplotlib.colors import ListedColormap
+
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(8.0, 6.4), layout="constrained")
+    else:
+        fig = ax.figure
+    alpha, mu = amap.alpha, amap.mu
+    pair = np.where((amap.fc_region >= 0) & (amap.pf_region >= 0),
+                    4 * amap.pf_region + amap.fc_region, -1)
+    present = [int(v) for v in np.unique(pair) if v >= 0]
+    index = np.full(pair.shape, np.nan)
+    for k, v in enumerate(present):
+        index[pair == v] = k
+    palette = ["#fde0c5", "#cfe8f3", "#e2f0cb", "#f3d1e4", "#fff2b3", "#d9d2f0",
+               "#c9ead9", "#f6cfc4", "#dfe7ef", "#efe3c8", "#d0e0c0", "#e8d5c4"]
+    cmap = ListedColormap([palette[k % len(palette)] for k in range(max(len(present), 1))])
+    # cell edges halfway between grid values (log space)
+    def edges(v):
+        lv = np.log10(v)
+        mid = 0.5 * (lv[1:] + lv[:-1])
+        return 10 ** np.concatenate([[2 * lv[0] - mid[0]], mid, [2 * lv[-1] - mid[-1]]])
+    ax.pcolormesh(edges(alpha), edges(mu), index, cmap=cmap, vmin=-0.5,
+                  vmax=max(len(present), 1) - 0.5, shading="flat", rasterized=True)
+    if amap.westergaard is not None:
+        ax.contourf(alpha, mu, amap.westergaard.astype(float), levels=[0.5, 1.5],
+                    colors="none", hatches=["////"])
+        ax.contour(alpha, mu, amap.westergaard.astype(float), levels=[0.5], colors="0.35",
+                   linewidths=0.8)
+        ax.contour(alpha, mu, amap.jkr_fc.astype(float), levels=[0.5], colors="0.45",
+                   linewidths=3.0, alpha=0.7)
+        levels = pull_off_levels or [0.01, 0.03, 0.1, 0.3, 1.0, 3.0]
+        with np.errstate(invalid="ignore"):
+            cs = ax.contour(alpha, mu, -amap.P_pf, levels=levels, colors="0.25",
+                            linewidths=0.6, linestyles="dotted")
+        ax.clabel(cs, fmt=lambda v: f"$-P_{{pf}}^*$={v:g}", fontsize=7, inline=True)
+    for b in amap.boundaries:
+        ax.plot(b.alpha, b.mu, color="k", lw=1.6, ls="-" if b.code % 1000 < 200 else "--")
+    if labels:
+        la, lm = np.log10(alpha), np.log10(mu)
+        for k, v in enumerate(present):
+            jj, ii = np.nonzero((index == k).T)
+            if jj.size < 6:
+                continue
+            # the cell of the region farthest inside it (largest distance to other cells)
+            mask = index == k
+            best, where = -1, None
+            for i, j in zip(ii, jj):
+                d = 0
+                while (i - d >= 0 and i + d < mask.shape[0] and j - d >= 0 and
+                       j + d < mask.shape[1] and mask[i - d:i + d + 1, j - d:j + d + 1].all()):
+                    d += 1
+                if d > best:
+                    best, where = d, (i, j)
+            i, j = where
+            ax.text(10 ** la[j], 10 ** lm[i],
+                    f"FC {_MAP_SHORT[v % 4]}\nPO {_MAP_SHORT[v // 4]}", ha="center",
+                    va="center", fontsize=8, bbox=dict(boxstyle="round,pad=0.2", fc="white",
+                                                       ec="none", alpha=0.75))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlim(alpha[0], alpha[-1])
+    ax.set_ylim(mu[0], mu[-1])
+    ax.set_xlabel(r"$\alpha$ (adhesion vs. elasticity)")
+    ax.set_ylabel(r"$\mu$ (range of adhesive stress)")
+    ax.set_title(f"Adhesion map, {amap.model.upper()}: FC = how full contact is reached, "
+                 f"PO = how contact is lost", fontsize=10)
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    handles = [Line2D([], [], color="k", lw=1.6, label="full-contact boundary"),
+               Line2D([], [], color="k", lw=1.6, ls="--", label="pull-off boundary")]
+    if amap.westergaard is not None:
+        handles += [Patch(fc="none", ec="0.35", hatch="////",
+                          label="Westergaard within 1 % (P_fc and P_pf)"),
+                    Line2D([], [], color="0.45", lw=3, alpha=0.7,
+                           label="edge of: JKR P_fc within 1 %"),
+                    Line2D([], [], color="0.25", lw=0.6, ls="dotted",
+                           label="contours of -P_pf")]
+    ax.legend(handles=handles, loc="lower left", fontsize=7, framealpha=0.85)
+    return fig

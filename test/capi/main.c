@@ -835,6 +835,38 @@ static void test_version(void) {
          v ? v : "(null)", want);
 }
 
+/* wa_adhesion_map: DW over three alpha gives the boundaries 101 and 212 at alpha = 0.01
+   (where mechanism_change puts them, 1.8099 and 43.589), each curve in increasing alpha;
+   capacity too small writes only what fits; invalid input gives *n_out = 0. */
+static void test_adhesion_map(void) {
+   const double alpha[3] = {0.01, 0.0102, 0.0104};
+   int code[512], n = -1, st, i, saw101 = 0, saw212 = 0, small[2];
+   double a[512], m[512], as[2], ms[2];
+   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   CHECK(st == WA_OK && n >= 9, "adhesion_map: status %d, %d points", st, n);
+   for (i = 0; i < n && i < 512; i++) {
+      if (code[i] == 101 && a[i] == 0.01) saw101 = close_to(m[i], 1.8098847396573090, 1e-8);
+      if (code[i] == 212 && a[i] == 0.01) saw212 = close_to(m[i], 43.588507907118696, 1e-8);
+      if (i > 0 && code[i] == code[i - 1] && a[i] > a[i - 1] == 0 && a[i] != 0.01)
+         CHECK(0, "adhesion_map: alpha increases along a curve (point %d)", i);
+   }
+   CHECK(saw101 && saw212, "adhesion_map: 101 at mu 1.80988, 212 at mu 43.5885");
+   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 2, small, as, ms, &n);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n >= 9, "adhesion_map capacity 2: %d, %d", st, n);
+   st = wa_adhesion_map(WA_MODEL_JKR, 3, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map jkr refused");
+   st = wa_adhesion_map(WA_MODEL_DW, 0, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map n_alpha 0 refused");
+   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e3, 1e-3, 512, code, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map mu_lo > mu_hi refused");
+   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, NULL, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL code refused");
+   st = wa_adhesion_map(WA_MODEL_DW, 3, NULL, 1e-3, 1e3, 512, code, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL alpha refused");
+   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, NULL);
+   CHECK(st == WA_INVALID_ARGUMENT, "adhesion_map NULL n_out refused");
+}
+
 int main(void) {
    test_version();
    test_closed_forms();
@@ -858,6 +890,7 @@ int main(void) {
    test_critical_sweep();
    test_sweep_keeps_rows();
    test_branch_threads();
+   test_adhesion_map();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

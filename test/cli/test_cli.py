@@ -400,3 +400,38 @@ def test_interrupted_run_removes_its_temporary_file(cli, tmp_path, sig):
     assert proc.returncode == 128 + sig
     assert files_in(tmp_path) == ["t.txt"]
     assert out.read_text() == "precious\n"
+
+
+# --------------------------------------------------------------------- map (issue 13)
+
+def test_map_rows_and_header(cli):
+    """`map` prints rows 'boundary alpha mu' with every code explained in the header; at
+    alpha = 0.3 (DW) the boundaries are where mechanism_change (critical's header) puts
+    them."""
+    res = run(cli, "map", "--model", "dw", "--alpha", "0.3,0.31")
+    header = [l for l in res.stdout.splitlines() if l.startswith("#")]
+    data = [l.split() for l in res.stdout.splitlines() if l and not l.startswith("#")]
+    codes = {int(r[0]) for r in data}
+    assert {101, 212}.issubset(codes)
+    for code in codes:
+        assert any(l.startswith(f"# boundary {code} = ") for l in header), code
+    assert "# columns: boundary alpha mu" in header
+    crit = run(cli, "critical", "--model", "dw", "--alpha", "0.3", "--mu-range",
+               "1:10:5:log").stdout
+    fc = float([l for l in crit.splitlines() if "P_fc: gradual -> jump case 1" in l][0]
+               .split()[4])
+    mu_101 = [float(r[2]) for r in data if r[0] == "101" and float(r[1]) == 0.3][0]
+    assert abs(mu_101 - fc) <= 1e-8 * fc
+
+
+def test_map_csv_and_usage_errors(cli):
+    res = run(cli, "map", "--model", "dw", "--alpha", "0.3", "--format", "csv")
+    lines = res.stdout.splitlines()
+    assert lines[0] == "boundary,alpha,mu" and all(l.count(",") == 2 for l in lines[1:])
+    for args in (["map", "--model", "jkr"], ["map", "--mu", "1"],
+                 ["map", "--alpha", "0.3", "--alpha-range", "0.1:1:3:log"],
+                 ["critical", "--alpha-range", "0.1:1:3:log"],
+                 ["map", "--alpha-range", "1:0.1:3:log"], ["map", "--alpha", "0.3,0.1"]):
+        bad = run(cli, *args, check=False)
+        assert bad.returncode == 2 and bad.stdout == "", args
+        assert "wavyadhesion:" in bad.stderr

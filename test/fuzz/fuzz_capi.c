@@ -1221,6 +1221,89 @@ static void usage(void) {
    exit(2);
 }
 
+/* wa_adhesion_map: a map costs 0.1-1 s per alpha, too slow for the random loop, so its
+   contract is checked on a fixed set of adversarial calls (n_alpha <= 2, DW and MD):
+   status among those documented, WA_INVALID_ARGUMENT for every invalid argument with
+   *n_out = 0 and the arrays untouched, counts and guards respected, finite points with
+   codes of the documented form. Returns the number of violations. */
+static int contract_adhesion_map(void) {
+   enum { CAP = 256, MG = 4 };
+   static const double alpha_ok[2] = {0.3, 0.31}, alpha_dec[2] = {0.3, 0.2};
+   const double alpha_nan[1] = {NAN}, alpha_big[1] = {1e300};
+   struct {
+      int model, n_alpha, capacity, null_mask;
+      const double *alpha;
+      double mu_lo, mu_hi;
+      int invalid;
+   } cases[] = {
+      {WA_MODEL_DW, 2, CAP, 0, alpha_ok, 1e-3, 1e3, 0},
+      {WA_MODEL_MD, 1, CAP, 0, alpha_ok, 0.1, 10, 0},
+      {WA_MODEL_DW, 2, 1, 0, alpha_ok, 1e-3, 1e3, 0},
+      {WA_MODEL_DW, 2, 0, 7, alpha_ok, 1e-3, 1e3, 0},
+      {WA_MODEL_JKR, 2, CAP, 0, alpha_ok, 1e-3, 1e3, 1},
+      {99, 2, CAP, 0, alpha_ok, 1e-3, 1e3, 1},
+      {-1, 2, CAP, 0, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 0, CAP, 0, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, -3, CAP, 0, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 0, alpha_dec, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 1, CAP, 0, alpha_nan, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 1, CAP, 0, alpha_big, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 0, alpha_ok, NAN, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 0, alpha_ok, 1e-3, INFINITY, 1},
+      {WA_MODEL_DW, 2, CAP, 0, alpha_ok, 0.0, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 0, alpha_ok, 10, 1, 1},
+      {WA_MODEL_DW, 2, -1, 0, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, INT_MIN, 0, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 1, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 2, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 4, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 8, alpha_ok, 1e-3, 1e3, 1},
+      {WA_MODEL_DW, 2, CAP, 16, alpha_ok, 1e-3, 1e3, 1},
+   };
+   int k, i, bad = 0;
+   for (k = 0; k < (int)(sizeof cases / sizeof cases[0]); k++) {
+      int code[CAP + 2 * MG], n = -7, st, cap = cases[k].capacity, m = cases[k].null_mask;
+      double a[CAP + 2 * MG], mu[CAP + 2 * MG];
+      for (i = 0; i < CAP + 2 * MG; i++) code[i] = -12345, a[i] = mu[i] = -12345.0;
+      st = wa_adhesion_map(cases[k].model, cases[k].n_alpha, (m & 16) ? NULL : cases[k].alpha,
+                           cases[k].mu_lo, cases[k].mu_hi, cap, (m & 1) ? NULL : code + MG,
+                           (m & 2) ? NULL : a + MG, (m & 4) ? NULL : mu + MG,
+                           (m & 8) ? NULL : &n);
+      int written = (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) ? (n < cap ? n : cap) : 0;
+#define VIOL(...) (printf("fuzz: wa_adhesion_map case %d: ", k), printf(__VA_ARGS__), \
+                   printf("\n"), bad++)
+      if (st != WA_OK && st != WA_INVALID_ARGUMENT && st != WA_CAPACITY_TOO_SMALL &&
+          st != WA_NOT_CONVERGED && st != WA_NUMERICAL_ERROR)
+         VIOL("undocumented status %d", st);
+      if (cases[k].invalid && st != WA_INVALID_ARGUMENT) VIOL("invalid accepted: %d", st);
+      if (!cases[k].invalid && st == WA_INVALID_ARGUMENT) VIOL("valid call refused");
+      if (!(m & 8)) {
+         if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL && n != 0) VIOL("n_out %d on failure", n);
+         if (st == WA_CAPACITY_TOO_SMALL && !(n > cap)) VIOL("capacity %d, n_out %d", cap, n);
+         if (st == WA_OK && (n < 0 || n > cap)) VIOL("n_out %d, capacity %d", n, cap);
+      }
+      for (i = 0; i < CAP + 2 * MG; i++) {
+         int inside = i >= MG && i < MG + written;
+         if (!inside && (code[i] != -12345 || a[i] != -12345.0 || mu[i] != -12345.0)) {
+            VIOL("element %d written outside the %d points", i - MG, written);
+            break;
+         }
+         if (inside) {
+            int c = code[i], which = c / 100, lo = c / 10 % 10, hi = c % 10;
+            if (!(which == 1 || which == 2) || lo > 3 || hi > 3 || lo == hi)
+               VIOL("code %d", c);
+            if (!isfinite(a[i]) || !isfinite(mu[i]) || !(mu[i] >= cases[k].mu_lo) ||
+                !(mu[i] <= cases[k].mu_hi))
+               VIOL("point %d (%g, %g) outside the range", i - MG, a[i], mu[i]);
+         }
+      }
+#undef VIOL
+   }
+   printf("fuzz: wa_adhesion_map contract: %d fixed calls, %d violations\n",
+          (int)(sizeof cases / sizeof cases[0]), bad);
+   return bad;
+}
+
 int main(int argc, char **argv) {
    const char *env;
    int i, k, fn, severe = 0;
@@ -1266,6 +1349,7 @@ int main(int argc, char **argv) {
       for (start = 0; start < opt_calls; start++) run_one(start);
       return 0;
    }
+   if (opt_only < 0) severe += contract_adhesion_map();
 
    start = opt_only >= 0 ? opt_only : 0;
    {

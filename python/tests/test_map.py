@@ -1,0 +1,68 @@
+"""wavyadhesion.adhesion_map (issue 13): boundaries agree with the CLI/Fortran, region
+grids, forces and model-choice masks, executors give the serial result, errors."""
+
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import wavyadhesion as wa
+
+
+@pytest.fixture(scope="module")
+def small_map():
+    return wa.adhesion_map("dw", [0.3, 0.31], (1e-3, 1e3, 30), forces=True)
+
+
+def test_boundaries_and_meanings(small_map):
+    codes = {b.code for b in small_map.boundaries}
+    assert {101, 212}.issubset(codes)
+    b101 = [b for b in small_map.boundaries if b.code == 101][0]
+    assert b101.meaning == "full contact: gradual -> jump case 1"
+    assert np.all(np.diff(b101.alpha) > 0)
+    # mechanism_change's value at alpha = 0.3 (CLI critical header), to 1e-8
+    assert b101.mu[b101.alpha == 0.3][0] == pytest.approx(2.7732638945721502, rel=1e-8)
+    assert wa.boundary_meaning(1113).endswith("(as alpha grows, at fixed mu)")
+    assert wa.boundary_meaning(7) == "unknown"
+
+
+def test_regions_and_forces(small_map):
+    m = small_map
+    assert m.fc_region.shape == m.pf_region.shape == m.P_fc.shape == (30, 2)
+    ref = wa.critical_forces("dw", 0.3, m.mu)
+    np.testing.assert_array_equal(m.P_fc[:, 0], ref.P_fc)
+    np.testing.assert_array_equal(m.fc_region[:, 0], ref.fc_mechanism)
+    # Westergaard within 1 % at the smallest mu, never at the largest
+    assert m.westergaard[0].all() and not m.westergaard[-1].any()
+    assert m.jkr_fc.dtype == bool
+
+
+def test_executor_equals_serial(small_map):
+    with ThreadPoolExecutor(2) as pool:
+        par = wa.adhesion_map("dw", [0.3, 0.31], (1e-3, 1e3, 30), forces=True,
+                              executor=pool)
+    np.testing.assert_array_equal(par.P_pf, small_map.P_pf)
+    np.testing.assert_array_equal(par.fc_region, small_map.fc_region)
+    assert len(par.boundaries) == len(small_map.boundaries)
+    for a, b in zip(par.boundaries, small_map.boundaries):
+        assert a.code == b.code
+        np.testing.assert_array_equal(a.mu, b.mu)
+
+
+def test_errors():
+    with pytest.raises(wa.InvalidArgumentError):
+        wa.adhesion_map("jkr", [0.3])
+    with pytest.raises(wa.InvalidArgumentError):
+        wa.adhesion_map("dw", [0.3, 0.1])
+    with pytest.raises(wa.InvalidArgumentError):
+        wa.adhesion_map("dw", [0.3], (10.0, 1.0, 5))
+
+
+def test_plotting(small_map):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    matplotlib.use("Agg")
+    from wavyadhesion import plotting
+    fig = plotting.adhesion_map(small_map)
+    ax = fig.axes[0]
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "log"

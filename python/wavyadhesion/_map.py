@@ -1,0 +1,226 @@
+"""The adhesion map of the (alpha, mu) plane (Fortran ``adhesion_map``, wa_map.f90)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+
+from . import _wa_f2py as _f
+from ._core import (InvalidArgumentError, _model_code, _raise, critical_forces, _OK,
+                    _text)
+from ._parallel import run_chunks
+
+#: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
+_NAMES = ("gradual", "jump case 1", "jump case 2", "snap at P=0")
+#: How a curve starts or ends.
+END_KINDS = ("grid edge", "inside (meets another boundary or turns)", "leaves the mu range",
+             "load path fails")
+
+
+def boundary_meaning(code: int) -> str:
+    """'full contact: gradual -> jump case 1' for code 101, and so on: code = 100*which +
+    10*(mechanism below) + (mechanism above) in mu, which 1 full contact, 2 pull-off.
+    Codes from 1000 (Python only, ``forces=True``): 1000 + the same, for a boundary
+    crossed in alpha (mechanism left -> right as alpha grows) at fixed mu."""
+    in_alpha = code >= 1000
+    code = code - 1000 if in_alpha else code
+    which, lo, hi = code // 100, code // 10 % 10, code % 10
+    if which not in (1, 2) or lo > 3 or hi > 3 or lo == hi:
+        return "unknown"
+    text = f"{'full contact' if which == 1 else 'pull-off'}: {_NAMES[lo]} -> {_NAMES[hi]}"
+    return text + (" (as alpha grows, at fixed mu)" if in_alpha else "")
+
+
+@dataclass(frozen=True)
+class Boundary:
+    """One boundary curve mu_b(alpha): ``code`` (see :func:`boundary_meaning`), the
+    points ``alpha``, ``mu`` (increasing alpha), and how it starts and ends
+    (``start``, ``end``: indices into ``END_KINDS``)."""
+
+    code: int
+    alpha: np.ndarray
+    mu: np.ndarray
+    start: int
+    end: int
+
+    @property
+    def meaning(self) -> str:
+        return boundary_meaning(self.code)
+
+
+@dataclass(frozen=True)
+class AdhesionMap:
+    """Boundaries and regions of one model over an (alpha, mu) grid.
+
+    ``fc_region`` and ``pf_region`` have shape (len(mu), len(alpha)): the full-contact and
+    pull-off mechanism codes (0 gradual, 1 jump case 1, 2 jump case 2, 3 snap; -1 where
+    the load path failed): computed at the scanned alpha and filled from the boundary
+    curves elsewhere, or, with ``forces=True``, computed in every cell. With ``forces=True``: ``P_fc``, ``P_pf`` on the same grid (NaN
+    where they failed) and the model-choice masks ``westergaard`` (both forces within
+    1 %: P_fc within 1 % of 1, |P_pf| <= 0.01) and ``jkr_fc`` (P_fc within 1 % of JKR's;
+    JKR's pull-off, -inf, is qualitatively wrong everywhere)."""
+
+    model: str
+    alpha: np.ndarray
+    mu: np.ndarray
+    fc_region: np.ndarray
+    pf_region: np.ndarray
+    boundaries: list
+    n_paths: int
+    P_fc: Optional[np.ndarray] = None
+    P_pf: Optional[np.ndarray] = None
+    westergaard: Optional[np.ndarray] = None
+    jkr_fc: Optional[np.ndarray] = None
+    jkr_P_fc: Optional[np.ndarray] = field(default=None, repr=False)
+
+
+def _grid(spec, name):
+    """(lo, hi, n) or an array of values."""
+    if isinstance(spec, tuple) and len(spec) == 3:
+        lo, hi, n = spec
+        if not (float(lo) > 0 and float(hi) > float(lo) and int(n) >= 2):
+            raise InvalidArgumentError(f"{name} = {spec!r}: need 0 < lo < hi and n >= 2", 1)
+        return np.geomspace(float(lo), float(hi), int(n))
+    values = np.asarray(spec, dtype=float).reshape(-1)
+    if values.size < 1:
+        raise InvalidArgumentError(f"{name} is empty", 1)
+    return values
+
+
+def _forces_chunk(args):
+    """Critical forces for one alpha over the mu grid (module level: picklable)."""
+    model, alpha, mu = args
+    res = critical_forces(model, alpha, mu, errors="nan")
+    return (np.asarray(res.P_fc, dtype=float), np.asarray(res.P_pf, dtype=float),
+            np.asarray(res.fc_mechanism, dtype=np.int32),
+            np.asarray(res.pf_mechanism, dtype=np.int32))
+
+
+def _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo, tol=1e-9):
+    """Bisect ln alpha at fixed mu to where the mechanism `which` leaves m_lo."""
+    lo, hi = np.log(a_lo), np.log(a_hi)
+    for _ in range(80):
+        if hi - lo <= tol:
+            break
+        mid = 0.5 * (lo + hi)
+        res = critical_forces(model, float(np.exp(mid)), mu, errors="nan")
+        m = int(res.fc_mechanism if which == 1 else res.pf_mechanism)
+        if m < 0:
+            return None
+        if m == m_lo:
+            lo = mid
+        else:
+            hi = mid
+    return float(np.exp(0.5 * (lo + hi)))
+
+
+def _alpha_chunk(args):
+    """Boundaries crossed in alpha at one mu (module level: picklable)."""
+    model, which, mu, a_lo, a_hi, m_lo = args
+    return _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo)
+
+
+def _vertical_boundaries(model, alpha, mu, regions, executor):
+    """Changes of mechanism between neighbouring alpha columns that no mu boundary
+    explains (the cells above and below agree on each side): a boundary crossed in alpha,
+    such as full contact: jump case 1 -> snap (DW, MD near alpha = 0.57 for large mu),
+    located by bisection in alpha at that mu to 1e-9 relative."""
+    jobs = []
+    for which, reg in ((1, regions[0]), (2, regions[1])):
+        for i in range(1, reg.shape[0] - 1):
+            for j in range(reg.shape[1] - 1):
+                a, b = reg[i, j], reg[i, j + 1]
+                if a < 0 or b < 0 or a == b:
+                    continue
+                if (reg[i - 1:i + 2, j] == a).all() and (reg[i - 1:i + 2, j + 1] == b).all():
+                    jobs.append((which, int(a), int(b), float(mu[i]), float(alpha[j]),
+                                 float(alpha[j + 1])))
+    found = run_chunks(_alpha_chunk, [(str(model), w, m, lo, hi, a)
+                                      for (w, a, b, m, lo, hi) in jobs], executor)
+    curves = {}
+    for (which, a, b, m, _lo, _hi), alpha_b in zip(jobs, found):
+        if alpha_b is not None:
+            curves.setdefault(1000 + 100 * which + 10 * a + b, []).append((alpha_b, m))
+    out = []
+    for code, pts in sorted(curves.items()):
+        pts.sort(key=lambda p: p[1])
+        out.append(Boundary(code, np.array([p[0] for p in pts]), np.array([p[1] for p in pts]),
+                            1, 1))
+    return out
+
+
+def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60), *,
+                 forces: bool = False, scan_every: int = 20, executor=None) -> AdhesionMap:
+    """The adhesion map of the (alpha, mu) plane for "dw" or "md".
+
+    Parameters
+    ----------
+    model : {"dw", "md"}
+    alpha_range : (lo, hi, n) or array_like
+        Log-spaced alpha (default 0.01..10, 200 values) or increasing values.
+    mu_range : (lo, hi, n)
+        The mu range and the number of log-spaced mu of the region grid (default 1e-3..1e3,
+        60); the boundaries are located anywhere in [lo, hi] to 2e-9 relative.
+    forces : bool
+        Also compute P_fc, P_pf and the mechanisms in every cell, the model-choice masks,
+        and the boundaries crossed in alpha (codes from 1000, located by bisection in
+        alpha at the grid mu where the mechanism changes between two alpha columns).
+    scan_every : int
+        The coarse mu scan that discovers boundaries runs at every scan_every-th alpha.
+    executor : concurrent.futures.Executor, optional
+        Runs the force grid (one chunk per alpha) and the bisections in alpha on it; the
+        boundaries in mu are continued in one Fortran call (serial). Results equal the
+        serial ones.
+
+    Returns
+    -------
+    AdhesionMap
+
+    Raises
+    ------
+    InvalidArgumentError
+        A model other than dw/md, a bad range (decreasing alpha, mu_lo >= mu_hi, ...).
+    """
+    code = _model_code(model)
+    alpha = _grid(alpha_range, "alpha_range")
+    if not (isinstance(mu_range, tuple) and len(mu_range) == 3):
+        raise InvalidArgumentError("mu_range must be (lo, hi, n)", 1)
+    mu_lo, mu_hi, n_mu = float(mu_range[0]), float(mu_range[1]), int(mu_range[2])
+    capacity = 64 * (alpha.size + 64)
+    (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, n_paths, status,
+     message) = _f.fa_adhesion_map(max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi,
+                                   int(scan_every))
+    if status != _OK:
+        _raise(status, message)
+    n = int(n_out)
+    boundaries = []
+    for c in range(1, int(curve[:n].max(initial=0)) + 1):
+        sel = np.flatnonzero(curve[:n] == c)
+        if sel.size == 0:
+            continue
+        boundaries.append(Boundary(int(codes[sel[0]]), a_out[sel].copy(), m_out[sel].copy(),
+                                   int(kinds[0, sel[0]]), int(kinds[1, sel[0]])))
+    result = dict(model=str(model), alpha=alpha, mu=np.asarray(mu_grid).copy(),
+                  fc_region=np.asarray(fc).copy(), pf_region=np.asarray(pf).copy(),
+                  boundaries=boundaries, n_paths=int(n_paths))
+    if forces:
+        mu = result["mu"]
+        parts = run_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
+                           executor)
+        p_fc = np.stack([p[0] for p in parts], axis=1)
+        p_pf = np.stack([p[1] for p in parts], axis=1)
+        # every cell computed: the exact region grid replaces the one filled from curves
+        result.update(fc_region=np.stack([p[2] for p in parts], axis=1),
+                      pf_region=np.stack([p[3] for p in parts], axis=1))
+        jkr = np.asarray(critical_forces("jkr", alpha, 0.0).P_fc, dtype=float)
+        with np.errstate(invalid="ignore"):
+            result["boundaries"] = boundaries + _vertical_boundaries(
+                model, alpha, result["mu"], (result["fc_region"], result["pf_region"]),
+                executor)
+            result.update(P_fc=p_fc, P_pf=p_pf,
+                          westergaard=(np.abs(p_fc - 1.0) <= 0.01) & (np.abs(p_pf) <= 0.01),
+                          jkr_fc=np.abs(p_fc - jkr[None, :]) <= 0.01 * np.abs(jkr[None, :]),
+                          jkr_P_fc=jkr)
+    return AdhesionMap(**result)

@@ -1,0 +1,724 @@
+!> The adhesion map of the (alpha, mu) plane: every change of the full-contact mechanism
+!> (gradual / jump from case 1 / jump from case 2 / snap at P* = 0) and of the pull-off
+!> mechanism (gradual / jump from case 1 / jump from case 2) as a curve mu_b(alpha), each
+!> point located to 2e-9 relative in mu, plus a region grid (the mechanisms in every cell).
+!>
+!> Method (doc/theory.md, "Adhesion map"): a coarse log scan in mu at every `scan_every`-th
+!> alpha (and the first and last) finds the changes; each change is then continued over
+!> the whole alpha grid in both directions: the next point is predicted by extrapolating
+!> the last three in (ln alpha, ln mu), bracketed by two load paths, and refined by a
+!> safeguarded secant on a smooth indicator whose zero is the change (the difference of
+!> the two loads whose order decides the mechanism, e.g. the largest fold load minus the
+!> load at a* -> 1/2), with a bisection step whenever the secant does not halve the
+!> bracket. Every trial mu is classified by its own load path, so the result is a bracket
+!> of the mechanism change, like `mechanism_change`'s. Where a curve cannot be continued
+!> (it meets another boundary, a region closes, or it leaves [mu_lo, mu_hi]) its end is
+!> located by bisection in alpha to 1e-6 relative.
+module wa_map
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, set_error
+   use wa_params, only: params_type, new_params, alpha_min, alpha_max, mu_min, mu_max
+   use wa_state, only: model_dw, model_md, zone_inside
+   use wa_branch, only: branch_type, trace_branch
+   use wa_loadpath, only: path_type, path_from_branch, mechanism_gradual, &
+      mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
+   implicit none
+   private
+
+   public :: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning
+   public :: map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+
+   !> How a boundary curve starts or ends: at the first/last alpha of the grid; inside the
+   !> grid (it meets another boundary, or the region it bounds closes: located to 1e-6
+   !> relative in alpha); where it leaves [mu_lo, mu_hi]; where the load path fails.
+   integer, parameter :: map_end_grid = 0, map_end_inside = 1, map_end_mu_range = 2, &
+      map_end_failed = 3
+
+   !> Relative width in mu of the final bracket of every boundary point
+   real(wp), parameter :: tol_t = 2.0e-9_wp
+   !> Relative accuracy in alpha of a located start or end of a curve
+   real(wp), parameter :: tol_alpha = 1.0e-6_wp
+   !> Bound on the curves of one map
+   integer, parameter :: max_boundaries = 64
+
+   !> One boundary curve: code = 100*which + 10*mech_below + mech_above (which: 1 full
+   !> contact, 2 pull-off; mech_*: mechanism_* codes just below / above the curve in mu).
+   type :: map_boundary
+      integer :: code = 0, which = 0, mech_below = -1, mech_above = -1
+      integer :: n = 0
+      !> Points in increasing alpha (the grid values, plus located ends off the grid)
+      real(wp), allocatable :: alpha(:), mu(:)
+      !> map_end_* codes of the first and the last point
+      integer :: start_kind = map_end_grid, end_kind = map_end_grid
+   end type map_boundary
+
+   !> The map: the grids, the mechanisms in every cell, the boundary curves.
+   type :: map_type
+      integer :: model = 0
+      real(wp), allocatable :: alpha(:), mu(:)
+      !> Full-contact and pull-off mechanism at (mu(i), alpha(j)); -1 where the load path
+      !> fails on a scanned alpha
+      integer, allocatable :: fc_region(:, :), pf_region(:, :)
+      integer :: n_boundaries = 0
+      type(map_boundary), allocatable :: boundary(:)
+      !> Load paths computed (the cost of the map)
+      integer :: n_paths = 0
+   end type map_type
+
+   !> One load path reduced to what the map needs: both mechanisms and the loads whose
+   !> order decides them (NaN where absent).
+   type :: probe_type
+      integer :: status = wa_ok
+      integer :: mech(2) = -1
+      !> Full contact: 0 P* at a* -> 1/2, 1/2 largest maximum on case 1 / case 2, 3 zero
+      real(wp) :: v_fc(0:3) = 0.0_wp
+      !> Pull-off: 0 P* at a* -> 0, 1/2 lowest minimum on case 1 / case 2
+      real(wp) :: v_pf(0:2) = 0.0_wp
+   end type probe_type
+
+   !> What continuing a curve needs (fixed for one map).
+   type :: tracker_type
+      integer :: model = 0, which = 0, ma = -1, mb = -1
+      real(wp) :: t_min = 0.0_wp, t_max = 0.0_wp
+      integer :: n_paths = 0
+   end type tracker_type
+
+contains
+
+   !> The boundary code of a change of mechanism `which` (1 full contact, 2 pull-off)
+   !> from mech_below to mech_above as mu grows.
+   pure integer function boundary_code(which, mech_below, mech_above)
+      integer, intent(in) :: which, mech_below, mech_above
+      boundary_code = 100*which + 10*mech_below + mech_above
+   end function boundary_code
+
+   !> "full contact: gradual -> jump case 1" and the like, for a boundary code.
+   pure function boundary_meaning(code) result(text)
+      integer, intent(in) :: code
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: names(0:3) = [character(len=11) :: "gradual", &
+         "jump case 1", "jump case 2", "snap at P=0"]
+      integer :: which, lo, hi
+      which = code/100
+      lo = mod(code/10, 10)
+      hi = mod(code, 10)
+      if (which < 1 .or. which > 2 .or. lo > 3 .or. hi > 3 .or. lo == hi) then
+         text = "unknown"
+         return
+      end if
+      text = merge("full contact: ", "pull-off:     ", which == 1)
+      text = trim(text)//" "//trim(names(lo))//" -> "//trim(names(hi))
+   end function boundary_meaning
+
+   !> Build the map of `model` (model_dw or model_md) over the increasing grid alpha(:)
+   !> and n_mu log-spaced mu in [mu_lo, mu_hi]. scan_every (default 20): the coarse mu scan
+   !> that discovers boundaries runs at every scan_every-th alpha (and the last).
+   !> status: wa_invalid_argument for bad input (errmsg names it), else wa_ok; boundaries
+   !> that cannot be continued end with end_kind = map_end_failed, never with a wrong point.
+   subroutine adhesion_map(model, alpha, mu_lo, mu_hi, n_mu, map, status, errmsg, scan_every)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
+      integer, intent(in) :: n_mu
+      type(map_type), intent(out) :: map
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, intent(in), optional :: scan_every
+      integer :: every, j, na
+
+      call check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)
+      if (status /= wa_ok) return
+      every = 20
+      if (present(scan_every)) every = scan_every
+      if (every < 1) then
+         call set_error(wa_invalid_argument, "adhesion_map: scan_every must be >= 1", &
+            status, errmsg)
+         return
+      end if
+      na = size(alpha)
+      map%model = model
+      map%alpha = alpha
+      map%mu = [(exp(log(mu_lo) + (log(mu_hi) - log(mu_lo))*real(j - 1, wp)/ &
+         real(n_mu - 1, wp)), j = 1, n_mu)]
+      allocate (map%fc_region(n_mu, na), map%pf_region(n_mu, na), map%boundary(0))
+      map%fc_region = -1
+      map%pf_region = -1
+      do j = 1, na
+         if (mod(j - 1, every) /= 0 .and. j /= na) cycle
+         call scan_alpha(map, j)
+      end do
+      call fill_regions(map)
+   end subroutine adhesion_map
+
+   subroutine check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)
+      integer, intent(in) :: model, n_mu
+      real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer :: j
+      status = wa_ok
+      if (model /= model_dw .and. model /= model_md) then
+         call set_error(wa_invalid_argument, "adhesion_map: model must be dw (2) or md (3)", &
+            status, errmsg)
+      else if (size(alpha) < 1) then
+         call set_error(wa_invalid_argument, "adhesion_map: alpha must hold at least one "// &
+            "value", status, errmsg)
+      else if (.not. all(alpha >= alpha_min .and. alpha <= alpha_max)) then
+         call set_error(wa_invalid_argument, "adhesion_map: every alpha must be in "// &
+            "[1e-12, 1e12]", status, errmsg)
+      else if (.not. (mu_lo >= mu_min .and. mu_hi <= mu_max .and. mu_lo < mu_hi)) then
+         call set_error(wa_invalid_argument, "adhesion_map: mu_lo < mu_hi required, both "// &
+            "in [1e-100, 1e100]", status, errmsg)
+      else if (n_mu < 2 .or. n_mu > 100000) then
+         call set_error(wa_invalid_argument, "adhesion_map: n_mu must be in [2, 100000]", &
+            status, errmsg)
+      else
+         do j = 2, size(alpha)
+            if (.not. alpha(j) > alpha(j - 1)) then
+               call set_error(wa_invalid_argument, "adhesion_map: alpha must be strictly "// &
+                  "increasing", status, errmsg)
+               return
+            end if
+         end do
+      end if
+   end subroutine check_input
+
+   !> Coarse scan at alpha(j): the mechanisms on the mu grid; every change between two
+   !> neighbouring successful rows not on a curve already found starts a new curve.
+   subroutine scan_alpha(map, j)
+      type(map_type), intent(inout) :: map
+      integer, intent(in) :: j
+      type(probe_type) :: pr
+      integer :: i, k, which, nm
+      integer, allocatable :: mech(:, :)
+      nm = size(map%mu)
+      allocate (mech(2, nm))
+      do i = 1, nm
+         call probe(map%model, map%alpha(j), log(map%mu(i)), pr)
+         map%n_paths = map%n_paths + 1
+         mech(:, i) = pr%mech
+      end do
+      map%fc_region(:, j) = mech(1, :)
+      map%pf_region(:, j) = mech(2, :)
+      call start_curves(map, j, log(map%mu), mech)
+   end subroutine scan_alpha
+
+   !> Every change between neighbouring successful rows of mech (at ln mu = t, alpha(j))
+   !> that no curve found so far explains starts a new curve.
+   recursive subroutine start_curves(map, j, t, mech)
+      type(map_type), intent(inout) :: map
+      integer, intent(in) :: j
+      real(wp), intent(in) :: t(:)
+      integer, intent(in) :: mech(:, :)
+      integer :: i, k, which
+      i = first_good(mech(1, :), 0)
+      do while (i > 0)
+         k = first_good(mech(1, :), i)
+         if (k == 0) exit
+         do which = 1, 2
+            if (mech(which, i) == mech(which, k)) cycle
+            if (known(map, j, which, mech(which, i), mech(which, k), exp(t(i)), exp(t(k)))) cycle
+            if (map%n_boundaries >= max_boundaries) return
+            call new_curve(map, j, which, mech(which, i), mech(which, k), t(i), t(k))
+         end do
+         i = k
+      end do
+   end subroutine start_curves
+
+   !> A finer scan of ln mu in [t_c - w, t_c + w] (and inside the map's mu range) at
+   !> alpha(j), where a curve ended: finds the curves it turns into or meets there.
+   recursive subroutine local_scan(map, j, t_c, w)
+      type(map_type), intent(inout) :: map
+      integer, intent(in) :: j
+      real(wp), intent(in) :: t_c, w
+      integer, parameter :: n = 24
+      type(probe_type) :: pr
+      real(wp) :: t(n), lo, hi
+      integer :: mech(2, n), i
+      lo = max(t_c - w, log(map%mu(1)))
+      hi = min(t_c + w, log(map%mu(size(map%mu))))
+      if (.not. hi > lo) return
+      do i = 1, n
+         t(i) = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
+         call probe(map%model, map%alpha(j), t(i), pr)
+         mech(:, i) = pr%mech
+      end do
+      map%n_paths = map%n_paths + n
+      call start_curves(map, j, t, mech)
+   end subroutine local_scan
+
+   pure integer function first_good(mech, i)
+      integer, intent(in) :: mech(:), i
+      integer :: r
+      first_good = 0
+      do r = i + 1, size(mech)
+         if (mech(r) >= 0) then
+            first_good = r
+            return
+         end if
+      end do
+   end function first_good
+
+   !> A curve of this kind (or its reverse) passes alpha(j) between mu_a and mu_b already,
+   !> or within 3e-3 relative of them: a mechanism that flickers near a boundary (201 does,
+   !> over 1e-5 to 1e-3 relative) must not start a second copy of the curve.
+   pure logical function known(map, j, which, ma, mb, mu_a, mu_b)
+      type(map_type), intent(in) :: map
+      integer, intent(in) :: j, which, ma, mb
+      real(wp), intent(in) :: mu_a, mu_b
+      real(wp), parameter :: band = 3.0e-3_wp
+      integer :: c, p
+      known = .false.
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            if (b%code /= boundary_code(which, ma, mb) .and. &
+               b%code /= boundary_code(which, mb, ma)) cycle
+            do p = 1, b%n
+               if (b%alpha(p) /= map%alpha(j)) cycle
+               if (b%mu(p) >= mu_a*(1.0_wp - band) .and. b%mu(p) <= mu_b*(1.0_wp + band)) then
+                  known = .true.
+                  return
+               end if
+            end do
+         end associate
+      end do
+   end function known
+
+   !> Locate a change bracketed by the scan at alpha(j), then continue it both ways.
+   recursive subroutine new_curve(map, j, which, ma, mb, t_a, t_b)
+      type(map_type), intent(inout) :: map
+      integer, intent(in) :: j, which, ma, mb
+      real(wp), intent(in) :: t_a, t_b
+      type(tracker_type) :: tr
+      type(probe_type) :: pa, pb
+      type(map_boundary) :: fwd, bwd, curve
+      real(wp) :: t
+      integer :: stat, m_hi, k_fwd, k_bwd
+
+      tr%model = map%model
+      tr%which = which
+      tr%ma = ma
+      tr%mb = mb
+      tr%t_min = log(map%mu(1))
+      tr%t_max = log(map%mu(size(map%mu)))
+      call probe(map%model, map%alpha(j), t_a, pa)
+      call probe(map%model, map%alpha(j), t_b, pb)
+      tr%n_paths = 2
+      call refine(tr, map%alpha(j), t_a, pa, t_b, pb, t, m_hi, stat)
+      if (stat /= wa_ok .or. m_hi /= mb) then        ! a third mechanism inside: skip
+         map%n_paths = map%n_paths + tr%n_paths
+         return
+      end if
+      call continue_curve(tr, map%alpha, j, t, +1, fwd, k_fwd)
+      call continue_curve(tr, map%alpha, j, t, -1, bwd, k_bwd)
+      map%n_paths = map%n_paths + tr%n_paths
+      curve%which = which
+      curve%mech_below = ma
+      curve%mech_above = mb
+      curve%code = boundary_code(which, ma, mb)
+      curve%n = bwd%n + fwd%n - 1
+      curve%alpha = [bwd%alpha(bwd%n:1:-1), fwd%alpha(2:fwd%n)]
+      curve%mu = [bwd%mu(bwd%n:1:-1), fwd%mu(2:fwd%n)]
+      curve%start_kind = bwd%end_kind
+      curve%end_kind = fwd%end_kind
+      if (duplicate(map, curve)) return
+      map%boundary = [map%boundary, curve]
+      map%n_boundaries = map%n_boundaries + 1
+      if (fwd%end_kind == map_end_inside) call scan_near_end(k_fwd, +1, fwd)
+      if (bwd%end_kind == map_end_inside) call scan_near_end(k_bwd, -1, bwd)
+   contains
+      !> The curves this one turns into or meets: scans around it at the last grid alpha
+      !> it passes, the next one, and 1, 2, 4 grid steps back (where a partner curve that
+      !> turns with it at the end has moved away from it).
+      recursive subroutine scan_near_end(k, dir, piece)
+         integer, intent(in) :: k, dir
+         type(map_boundary), intent(in) :: piece
+         real(wp) :: t_end, w
+         integer :: i, m, kk
+         t_end = log(piece%mu(piece%n))
+         if (k + dir >= 1 .and. k + dir <= size(map%alpha)) &
+            call local_scan(map, k + dir, t_end, 0.25_wp)
+         do m = 0, 4
+            if (m == 3) cycle
+            kk = k - dir*m
+            if (kk < 1 .or. kk > size(map%alpha)) exit
+            do i = 1, piece%n
+               if (piece%alpha(i) /= map%alpha(kk)) cycle
+               w = max(0.02_wp, 3.0_wp*abs(log(piece%mu(i)) - t_end))
+               call local_scan(map, kk, log(piece%mu(i)), w)
+            end do
+         end do
+      end subroutine scan_near_end
+   end subroutine new_curve
+
+   !> The curve repeats one found already: same code, within 3e-3 relative in mu at three
+   !> or more common alpha (a copy started inside a flickering band).
+   pure logical function duplicate(map, curve)
+      type(map_type), intent(in) :: map
+      type(map_boundary), intent(in) :: curve
+      integer :: c, p, q, n_same
+      duplicate = .false.
+      do c = 1, map%n_boundaries
+         if (map%boundary(c)%code /= curve%code) cycle
+         n_same = 0
+         do p = 1, curve%n
+            do q = 1, map%boundary(c)%n
+               if (map%boundary(c)%alpha(q) /= curve%alpha(p)) cycle
+               if (abs(map%boundary(c)%mu(q) - curve%mu(p)) <= 3.0e-3_wp*curve%mu(p)) &
+                  n_same = n_same + 1
+            end do
+         end do
+         duplicate = n_same >= min(3, curve%n)
+         if (duplicate) return
+      end do
+   end function duplicate
+
+   !> Continue the curve through (alpha(j), exp(t0)) over the grid in direction dir; the
+   !> points come out in the order visited (the start point first). Steps in ln alpha
+   !> adapt: a failed step is halved (the point in between, refined, joins the curve),
+   !> down to tol_alpha, where the curve ends.
+   subroutine continue_curve(tr, alpha, j, t0, dir, curve, k_last)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: alpha(:), t0
+      integer, intent(in) :: j, dir
+      type(map_boundary), intent(out) :: curve
+      !> The last grid index the curve passes
+      integer, intent(out) :: k_last
+      integer, parameter :: max_points = 4096
+      real(wp) :: x(max_points), y(max_points), a(max_points)
+      real(wp) :: t, err, pred, h, xt, delta
+      integer :: n, k, kind, iter
+      logical :: on_grid, approaching, refined(max_points)
+
+      n = 1
+      x(1) = log(alpha(j))
+      a(1) = alpha(j)
+      y(1) = t0
+      refined(1) = .true.
+      err = 1.0e-3_wp
+      h = 0.01_wp
+      approaching = .false.
+      curve%end_kind = map_end_grid
+      k = j + dir
+      k_last = j
+      do iter = 1, 100000
+         if (k < 1 .or. k > size(alpha) .or. n == max_points) exit
+         xt = log(alpha(k))
+         on_grid = abs(xt - x(n)) <= h
+         if (.not. on_grid) xt = x(n) + dir*h
+         pred = extrapolate(x, y, n, xt)
+         delta = max(4.0_wp*err, 1.0e-7_wp)
+         if (n < 3) delta = 1.0e-3_wp
+         ! off the grid after a failed step only whether the curve is there matters
+         call locate(tr, exp(xt), pred, delta, t, kind, &
+            bracket_only=approaching .and. .not. on_grid)
+         if (kind /= -1) then
+            h = 0.5_wp*min(h, abs(xt - x(n)))
+            curve%end_kind = kind
+            approaching = .true.
+            if (h < tol_alpha*max(1.0_wp, abs(x(n)))) exit
+            cycle
+         end if
+         curve%end_kind = map_end_grid
+         n = n + 1
+         x(n) = xt
+         a(n) = merge(alpha(k), exp(xt), on_grid)
+         y(n) = t
+         refined(n) = .not. (approaching .and. .not. on_grid)
+         if (n >= 4 .and. refined(n)) err = abs(t - pred)
+         h = 2.0_wp*h
+         if (on_grid) then
+            k_last = k
+            k = k + dir
+            approaching = .false.
+         end if
+      end do
+      if (.not. refined(n)) then            ! the last point found before the end, refined
+         call locate(tr, exp(x(n)), y(n), 1.0e-6_wp, t, kind)
+         if (kind == -1) then
+            y(n) = t
+            refined(n) = .true.
+         end if
+      end if
+      curve%n = count(refined(1:n))
+      curve%alpha = pack(a(1:n), refined(1:n))
+      curve%mu = exp(pack(y(1:n), refined(1:n)))
+   end subroutine continue_curve
+
+   !> ln mu at x = ln alpha from the last (up to) three points: a quadratic.
+   pure real(wp) function extrapolate(x, y, n, xq)
+      real(wp), intent(in) :: x(:), y(:), xq
+      integer, intent(in) :: n
+      real(wp) :: l0, l1, l2
+      if (n == 1) then
+         extrapolate = y(1)
+      else if (n == 2) then
+         extrapolate = y(2) + (y(2) - y(1))*(xq - x(2))/(x(2) - x(1))
+      else
+         associate (x0 => x(n - 2), x1 => x(n - 1), x2 => x(n))
+            l0 = (xq - x1)*(xq - x2)/((x0 - x1)*(x0 - x2))
+            l1 = (xq - x0)*(xq - x2)/((x1 - x0)*(x1 - x2))
+            l2 = (xq - x0)*(xq - x1)/((x2 - x0)*(x2 - x1))
+            extrapolate = l0*y(n - 2) + l1*y(n - 1) + l2*y(n)
+         end associate
+      end if
+   end function extrapolate
+
+   !> The change of the tracker's kind near ln mu = t_pred at alpha: bracket it with
+   !> steps growing from delta (x4 each), then refine. kind = -1 when found (t), else
+   !> the map_end_* reason it is not there.
+   subroutine locate(tr, alpha, t_pred, delta, t, kind, bracket_only)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: alpha, t_pred, delta
+      real(wp), intent(out) :: t
+      integer, intent(out) :: kind
+      !> Only bracket the change (t = the bracket's middle): enough to know it is there
+      logical, intent(in), optional :: bracket_only
+      type(probe_type) :: p0, p1
+      real(wp) :: t0, t1, d
+      integer :: dir, m0, stat, m_hi, tries
+
+      t = t_pred
+      kind = map_end_inside
+      if (t_pred < tr%t_min .or. t_pred > tr%t_max) then
+         kind = map_end_mu_range
+         return
+      end if
+      t0 = t_pred
+      call probe(tr%model, alpha, t0, p0)
+      tr%n_paths = tr%n_paths + 1
+      if (p0%status /= wa_ok) then
+         kind = map_end_failed
+         return
+      end if
+      m0 = p0%mech(tr%which)
+      if (m0 /= tr%ma .and. m0 /= tr%mb) return
+      dir = merge(1, -1, m0 == tr%ma)
+      d = delta
+      do tries = 1, 12
+         t1 = t0 + dir*d
+         call probe(tr%model, alpha, t1, p1)
+         tr%n_paths = tr%n_paths + 1
+         if (p1%status /= wa_ok) then
+            kind = map_end_failed
+            return
+         end if
+         if (p1%mech(tr%which) /= m0) exit
+         t0 = t1
+         p0 = p1
+         d = 4.0_wp*d
+         if (abs(t1 - t_pred) > max(64.0_wp*delta, 4.0e-3_wp)) return
+      end do
+      if (p1%mech(tr%which) == m0) return
+      if (p1%mech(tr%which) /= merge(tr%mb, tr%ma, dir == 1)) return
+      if (present(bracket_only)) then
+         if (bracket_only) then
+            t = 0.5_wp*(t0 + t1)
+            kind = -1
+            if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
+            return
+         end if
+      end if
+      if (dir == 1) then
+         call refine(tr, alpha, t0, p0, t1, p1, t, m_hi, stat)
+      else
+         call refine(tr, alpha, t1, p1, t0, p0, t, m_hi, stat)
+      end if
+      if (stat /= wa_ok) then
+         kind = map_end_failed
+      else if (m_hi == tr%mb) then
+         kind = -1
+         if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
+      end if
+   end subroutine locate
+
+   !> Shrink [t_lo, t_hi] (mechanisms tr%ma at t_lo, other at t_hi) to tol_t: secant on
+   !> the indicator of the tracker's pair, bisection whenever two steps do not halve the
+   !> bracket or the indicator is missing. t = the midpoint; m_hi = mechanism at t_hi.
+   subroutine refine(tr, alpha, t_lo_in, p_lo, t_hi_in, p_hi, t, m_hi, status)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: alpha, t_lo_in, t_hi_in
+      type(probe_type), intent(in) :: p_lo, p_hi
+      real(wp), intent(out) :: t
+      integer, intent(out) :: m_hi, status
+      real(wp), parameter :: fallback(6) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
+         0.0625_wp]
+      type(probe_type) :: px
+      real(wp) :: t_lo, t_hi, hx(2), hg(2), x, g, w_old(2)
+      integer :: nh, it, k
+      logical :: bisect
+
+      t_lo = t_lo_in
+      t_hi = t_hi_in
+      m_hi = p_hi%mech(tr%which)
+      status = wa_ok
+      nh = 0
+      call remember(t_lo, indicator(tr, p_lo))
+      call remember(t_hi, indicator(tr, p_hi))
+      w_old = huge(1.0_wp)
+      do it = 1, 200
+         if (t_hi - t_lo <= tol_t) exit
+         bisect = nh < 2 .or. t_hi - t_lo > 0.5_wp*w_old(1)
+         x = 0.5_wp*(t_lo + t_hi)
+         if (.not. bisect) then
+            if (hg(2) /= hg(1)) x = hx(2) - hg(2)*(hx(2) - hx(1))/(hg(2) - hg(1))
+            if (.not. (x > t_lo .and. x < t_hi)) x = 0.5_wp*(t_lo + t_hi)
+         end if
+         x = min(max(x, t_lo + 0.45_wp*tol_t), t_hi - 0.45_wp*tol_t)
+         do k = 1, size(fallback)
+            call probe(tr%model, alpha, x, px)
+            tr%n_paths = tr%n_paths + 1
+            if (px%status == wa_ok) exit
+            x = t_lo + fallback(k)*(t_hi - t_lo)
+         end do
+         if (px%status /= wa_ok) then
+            status = wa_not_converged
+            exit
+         end if
+         w_old = [w_old(2), t_hi - t_lo]
+         if (px%mech(tr%which) == tr%ma) then
+            t_lo = x
+         else
+            t_hi = x
+            m_hi = px%mech(tr%which)
+         end if
+         g = indicator(tr, px)
+         call remember(x, g)
+      end do
+      if (status == wa_ok .and. t_hi - t_lo > tol_t) status = wa_not_converged
+      t = 0.5_wp*(t_lo + t_hi)
+   contains
+      subroutine remember(tx, gx)
+         real(wp), intent(in) :: tx, gx
+         if (.not. ieee_is_finite(gx)) return
+         hx = [hx(2), tx]
+         hg = [hg(2), gx]
+         nh = min(nh + 1, 2)
+      end subroutine remember
+   end subroutine refine
+
+   !> The smooth quantity that vanishes where the tracker's mechanisms change (NaN when
+   !> this load path lacks one of the loads): for full contact the larger of the competing
+   !> maximum loads minus the other (against a snap: the largest load of the curve, whose
+   !> sign decides whether the curve crosses P* = 0); for pull-off the difference of the
+   !> competing minimum loads (gradual: P* at a* -> 0).
+   pure real(wp) function indicator(tr, p)
+      type(tracker_type), intent(in) :: tr
+      type(probe_type), intent(in) :: p
+      integer :: k
+      if (tr%which == 1) then
+         if (tr%ma == mechanism_snap .or. tr%mb == mechanism_snap) then
+            indicator = -huge(1.0_wp)
+            do k = 0, 2
+               if (ieee_is_finite(p%v_fc(k))) indicator = max(indicator, p%v_fc(k))
+            end do
+         else
+            indicator = p%v_fc(tr%ma) - p%v_fc(tr%mb)
+         end if
+      else
+         indicator = p%v_pf(tr%ma) - p%v_pf(tr%mb)
+      end if
+   end function indicator
+
+   !> Trace the branch at (alpha, exp(t)), follow the load path, keep the mechanisms and
+   !> the competing loads.
+   subroutine probe(model, alpha, t, p)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha, t
+      type(probe_type), intent(out) :: p
+      type(params_type) :: params
+      type(branch_type) :: br
+      type(path_type) :: path
+      real(wp) :: nan
+      integer :: i, n, zc
+      character(len=256) :: msg
+
+      msg = ""
+      nan = 0.0_wp
+      nan = nan/nan
+      p%v_fc = nan
+      p%v_pf = nan
+      call new_params(alpha, exp(t), params, p%status, msg)
+      if (p%status /= wa_ok) return
+      call trace_branch(model, params, br, p%status, msg)
+      if (p%status /= wa_ok) return
+      call path_from_branch(model, params, br, path, p%status, msg)
+      if (p%status /= wa_ok) return
+      p%mech = [path%fc_mechanism, path%pf_mechanism]
+      n = br%n
+      p%v_fc(0) = br%p_star(n)
+      p%v_fc(3) = 0.0_wp
+      p%v_pf(0) = br%p_star(1)
+      do i = 2, n - 1
+         zc = merge(1, 2, br%zone_case(i) == zone_inside)
+         if (br%extremum(i) == 1) then
+            if (.not. (p%v_fc(zc) >= br%p_star(i))) p%v_fc(zc) = br%p_star(i)
+         else if (br%extremum(i) == -1) then
+            if (.not. (p%v_pf(zc) <= br%p_star(i))) p%v_pf(zc) = br%p_star(i)
+         end if
+      end do
+      if (n >= 2) then                    ! the end itself is a minimum of case 2
+         if (br%p_star(n - 1) > br%p_star(n) .and. .not. (p%v_pf(2) <= br%p_star(n))) &
+            p%v_pf(2) = br%p_star(n)
+      end if
+   end subroutine probe
+
+   !> Region grid at the alpha values not scanned: the mechanisms at the lowest mu (one
+   !> load path) carried upward across the curves that pass this alpha.
+   subroutine fill_regions(map)
+      type(map_type), intent(inout) :: map
+      type(probe_type) :: pr
+      real(wp) :: mu_b(64)
+      integer :: to(64), j, which, c, p, nb, i, m, k, order(64)
+      do j = 1, size(map%alpha)
+         if (any(map%fc_region(:, j) /= -1)) cycle          ! scanned
+         call probe(map%model, map%alpha(j), log(map%mu(1)), pr)
+         map%n_paths = map%n_paths + 1
+         if (pr%status /= wa_ok) cycle
+         do which = 1, 2
+            nb = 0
+            do c = 1, map%n_boundaries
+               associate (b => map%boundary(c))
+                  if (b%which /= which) cycle
+                  do p = 1, b%n
+                     if (b%alpha(p) == map%alpha(j) .and. nb < size(mu_b)) then
+                        nb = nb + 1
+                        mu_b(nb) = b%mu(p)
+                        to(nb) = b%mech_above
+                     end if
+                  end do
+               end associate
+            end do
+            order(1:nb) = sort_index(mu_b(1:nb))
+            m = pr%mech(which)
+            k = 1
+            do i = 1, size(map%mu)
+               do while (k <= nb)
+                  if (mu_b(order(k)) > map%mu(i)) exit
+                  m = to(order(k))
+                  k = k + 1
+               end do
+               if (which == 1) map%fc_region(i, j) = m
+               if (which == 2) map%pf_region(i, j) = m
+            end do
+         end do
+      end do
+   end subroutine fill_regions
+
+   pure function sort_index(v) result(idx)
+      real(wp), intent(in) :: v(:)
+      integer :: idx(size(v)), i, j, tmp
+      idx = [(i, i = 1, size(v))]
+      do i = 2, size(v)
+         j = i
+         do while (j > 1)
+            if (v(idx(j - 1)) <= v(idx(j))) exit
+            tmp = idx(j)
+            idx(j) = idx(j - 1)
+            idx(j - 1) = tmp
+            j = j - 1
+         end do
+      end do
+   end function sort_index
+
+end module wa_map

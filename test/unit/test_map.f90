@@ -1,0 +1,147 @@
+!> The adhesion map (wa_map): boundary points agree with mechanism_change's bisection to
+!> 1e-8 relative in mu, codes and meanings, regions on each side, invalid arguments.
+module test_map
+   use harness, only: error_type, unittest_type, new_unittest, check
+   use wavyadhesion
+   implicit none
+   private
+
+   public :: collect_map
+
+contains
+
+   subroutine collect_map(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest("dw_points_equal_mechanism_change_20_alpha", test_dw_points), &
+         new_unittest("md_points_equal_mechanism_change", test_md_points), &
+         new_unittest("codes_and_meanings", test_codes), &
+         new_unittest("regions_match_boundaries", test_regions), &
+         new_unittest("invalid_arguments", test_invalid)]
+   end subroutine collect_map
+
+   !> 20 alpha over [0.01, 10]: every boundary point on the grid, rebisected by
+   !> mechanism_change from a bracket of +-1e-7 around it, agrees to 1e-8 relative.
+   !> Except boundaries 201/210 (pull-off: gradual -> jump case 1): there the load path's
+   !> mechanism flickers over a band of ~1e-5 relative in mu (the lowest fold load and the
+   !> load at a* -> 0 coincide, and the landing test compares them on the traced points),
+   !> so any two bisections agree only to that band: checked to 2e-5.
+   subroutine test_dw_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_points(error, model_dw, 20)
+   end subroutine test_dw_points
+
+   subroutine test_md_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_points(error, model_md, 2)
+   end subroutine test_md_points
+
+   subroutine check_points(error, model, n_alpha)
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in) :: model, n_alpha
+      type(map_type) :: map
+      real(wp) :: alpha(n_alpha), mu_c, worst, worst_201, d
+      integer :: status, c, p, j, n_checked
+      character(len=256) :: msg
+      alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(j - 1, wp)/real(n_alpha - 1, wp)), &
+         j = 1, n_alpha)]
+      if (n_alpha == 2) alpha = [0.1_wp, 0.11_wp]     ! MD: two near alpha keep it fast
+      msg = ""
+      call adhesion_map(model, alpha, 1.0e-2_wp, 1.0e2_wp, 40, map, status, msg, &
+         scan_every=max(1, n_alpha/4))
+      call check(error, status == wa_ok, "map: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, map%n_boundaries >= 3, "at least three boundaries")
+      if (allocated(error)) return
+      worst = 0.0_wp
+      worst_201 = 0.0_wp
+      n_checked = 0
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            do p = 1, b%n
+               if (.not. any(alpha == b%alpha(p))) cycle
+               call mechanism_change(model, b%alpha(p), b%which, b%mu(p)*(1.0_wp - 1.0e-7_wp), &
+                  b%mu(p)*(1.0_wp + 1.0e-7_wp), mu_c, status)
+               call check(error, status == wa_ok, "mechanism_change converges")
+               if (allocated(error)) return
+               d = abs(mu_c - b%mu(p))/b%mu(p)
+               if (b%code == 201 .or. b%code == 210) then
+                  worst_201 = max(worst_201, d)
+               else
+                  worst = max(worst, d)
+               end if
+               n_checked = n_checked + 1
+            end do
+         end associate
+      end do
+      call check(error, n_checked >= 2*n_alpha, "points checked")
+      call check(error, worst_201 <= 2.0e-5_wp, "boundary 201 within its flicker band")
+      call check(error, worst <= 1.0e-8_wp, "boundary points agree with mechanism_change")
+   end subroutine check_points
+
+   subroutine test_codes(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check(error, boundary_code(1, mechanism_gradual, mechanism_jump_case1) == 101, &
+         "code 101")
+      call check(error, boundary_meaning(101) == "full contact: gradual -> jump case 1", &
+         "meaning of 101")
+      call check(error, boundary_meaning(212) == "pull-off: jump case 1 -> jump case 2", &
+         "meaning of 212")
+      call check(error, boundary_meaning(103) == "full contact: gradual -> snap at P=0", &
+         "meaning of 103")
+      call check(error, boundary_meaning(7) == "unknown", "unknown code")
+   end subroutine test_codes
+
+   !> At alpha = 0.1 and 3 (DW) the region grid holds mech_below just under each boundary
+   !> and mech_above just over it (between grid rows that straddle it).
+   subroutine test_regions(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(map_type) :: map
+      integer :: status, c, p, i, j
+      integer, allocatable :: region(:, :)
+      call adhesion_map(model_dw, [0.1_wp, 0.2_wp, 3.0_wp], 1.0e-3_wp, 1.0e3_wp, 40, map, &
+         status, scan_every=2)
+      call check(error, status == wa_ok, "map")
+      if (allocated(error)) return
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            region = map%fc_region
+            if (b%which == 2) region = map%pf_region
+            do p = 1, b%n
+               do j = 1, size(map%alpha)
+                  if (map%alpha(j) /= b%alpha(p)) cycle
+                  i = count(map%mu < b%mu(p))
+                  if (i < 1 .or. i >= size(map%mu)) cycle
+                  call check(error, region(i, j) == b%mech_below .and. &
+                     region(i + 1, j) == b%mech_above, "regions on each side of a boundary")
+                  if (allocated(error)) return
+               end do
+            end do
+         end associate
+      end do
+   end subroutine test_regions
+
+   subroutine test_invalid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(map_type) :: map
+      integer :: status
+      character(len=256) :: msg
+      msg = ""
+      call adhesion_map(model_jkr, [0.3_wp], 1.0e-3_wp, 1.0e3_wp, 10, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "model") > 0, &
+         "jkr refused")
+      call adhesion_map(model_dw, [0.3_wp, 0.1_wp], 1.0e-3_wp, 1.0e3_wp, 10, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "increasing") > 0, &
+         "decreasing alpha refused")
+      call adhesion_map(model_dw, [0.3_wp], 1.0_wp, 1.0_wp, 10, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "mu_lo") > 0, &
+         "empty mu range refused")
+      call adhesion_map(model_dw, [0.3_wp], 1.0e-3_wp, 1.0e3_wp, 1, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "n_mu") > 0, &
+         "n_mu = 1 refused")
+      call adhesion_map(model_dw, [0.0_wp], 1.0e-3_wp, 1.0e3_wp, 10, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "alpha") > 0, &
+         "alpha = 0 refused")
+   end subroutine test_invalid
+
+end module test_map
