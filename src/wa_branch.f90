@@ -758,6 +758,9 @@ contains
             "could not be located", status, errmsg)
          return
       end if
+      ! a turn of P* within round-off of both ends is no fold: the corner is the extremum
+      if (sgn*(s%p_star - max(sgn*s_hint%p_star, sgn*curve_case2_load(model, params, &
+         a_switch))*sgn) <= 1.0e-12_wp*max(1.0_wp, abs(s%p_star))) return
       f%a = s%a_star
       f%y = curve_variable(model, s)
       f%zone_case = zone_inside

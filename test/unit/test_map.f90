@@ -41,6 +41,7 @@ contains
       integer, intent(in) :: model, n_alpha
       type(map_type) :: map
       real(wp) :: alpha(n_alpha), mu_c, worst, worst_201, d
+      character(len=200) :: text
       integer :: status, c, p, j, n_checked
       character(len=256) :: msg
       alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(j - 1, wp)/real(n_alpha - 1, wp)), &
@@ -62,7 +63,9 @@ contains
                if (.not. any(alpha == b%alpha(p))) cycle
                call mechanism_change(model, b%alpha(p), b%which, b%mu(p)*(1.0_wp - 1.0e-7_wp), &
                   b%mu(p)*(1.0_wp + 1.0e-7_wp), mu_c, status)
-               call check(error, status == wa_ok, "mechanism_change converges")
+               write (text, '(a,i0,a,es24.16,a,es24.16,a,i0)') "mechanism_change converges: code ", &
+                  b%code, " alpha ", b%alpha(p), " mu ", b%mu(p), " status ", status
+               call check(error, status == wa_ok, trim(text))
                if (allocated(error)) return
                d = abs(mu_c - b%mu(p))/b%mu(p)
                if (b%code == 201 .or. b%code == 210) then
