@@ -16,8 +16,7 @@ module wa_capi
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type
    use wa_kernels, only: westergaard_load, jkr_load
-   use wa_models, only: check_model, model_equilibrium, model_roots, model_state
-   use wa_separation, only: state_profile
+   use wa_models, only: check_model, model_equilibrium, model_roots, model_profile
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
    use wa_release, only: wa_version
@@ -1195,11 +1194,16 @@ contains
             end if
          end do
       end if
-      if (stat == wa_ok) call model_state(int(model), params, a_star, state, stat, msg, c_star)
-      if (stat == wa_ok .and. n > 0) then
-         allocate (t(n), g(n))
-         call state_profile(int(model), params, state, x_in, t, g, stat, msg)
-         if (stat == wa_ok) then
+      if (stat == wa_ok) then
+         allocate (t(max(0, n)), g(max(0, n)))
+         if (n > 0) then
+            call model_profile(int(model), params, a_star, x_in, t, g, state, stat, msg, &
+               c_star)
+         else
+            call model_profile(int(model), params, a_star, [real(c_double) ::], t, g, state, &
+               stat, msg, c_star)
+         end if
+         if (stat == wa_ok .and. n > 0) then
             call c_f_pointer(traction, t_out, [n])
             call c_f_pointer(gap, g_out, [n])
             t_out = t

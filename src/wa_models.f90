@@ -5,8 +5,9 @@
 !> Shared by the C interface, the Python facade and the command-line driver.
 module wa_models
    use wa_kinds, only: wp
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_capacity_too_small, &
-      set_error
+      wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_full_contact, model_westergaard, &
@@ -14,11 +15,12 @@ module wa_models
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_roots
    use wa_md, only: md_equilibrium, md_roots
-   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, md_no_contact_state
+   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, md_no_contact_state, &
+      state_profile
    implicit none
    private
 
-   public :: check_model, model_equilibrium, model_roots, model_state
+   public :: check_model, model_equilibrium, model_roots, model_state, model_profile
 
    !> The most states one (alpha, mu, a*) can have in any model (DW's root scan keeps at
    !> most 48); internal callers size their buffers with it.
@@ -208,6 +210,55 @@ contains
       end if
       state = states(best)
    end subroutine model_state
+
+   !> Traction p/p* and gap h/Delta at every x_star of the state model_state identifies
+   !> (state receives it). Every gap is finite and >= 0, every traction finite except
+   !> JKR's -Infinity exactly at |x*| = a* (folded into [0, 1/2] as |x* - anint(x*)|):
+   !> anything else (an underflow at extreme a*) is wa_numerical_error, never returned.
+   !> traction and gap must have the size of x_star; on failure they are 0.
+   pure subroutine model_profile(model, params, a_star, x_star, traction, gap, state, &
+         status, errmsg, c_star)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
+      integer, intent(in) :: model
+      !> Validated parameters (new_params)
+      type(params_type), intent(in) :: params
+      !> Contact half-width over the period, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> The points x* (any finite values: period 1, crest at 0)
+      real(wp), intent(in) :: x_star(:)
+      !> Receive p/p* and h/Delta at each x_star
+      real(wp), intent(out) :: traction(:), gap(:)
+      !> The state
+      type(state_type), intent(out) :: state
+      !> wa_ok or the failure's status code
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+      !> Interaction-zone half-width of the state, in [0, 1/2] (default: the principal state)
+      real(wp), intent(in), optional :: c_star
+      character(len=12) :: text
+      integer :: i
+
+      traction = 0.0_wp
+      gap = 0.0_wp
+      call model_state(model, params, a_star, state, status, errmsg, c_star)
+      if (status /= wa_ok) return
+      call state_profile(model, params, state, x_star, traction, gap, status, errmsg)
+      if (status /= wa_ok) return
+      do i = 1, size(x_star)
+         if (ieee_is_finite(gap(i)) .and. gap(i) >= 0.0_wp) then
+            if (ieee_is_finite(traction(i))) cycle
+            if (model == model_jkr .and. traction(i) < 0.0_wp .and. &
+                  abs(x_star(i) - anint(x_star(i))) == state%a_star) cycle
+         end if
+         write (text, '(i0)') i
+         call set_error(wa_numerical_error, "profile: traction or gap not finite (or gap "// &
+            "< 0) at point "//trim(text)//" (an underflow at this a_star)", status, errmsg)
+         traction = 0.0_wp
+         gap = 0.0_wp
+         return
+      end do
+   end subroutine model_profile
 
    !> Westergaard (3.1) or JKR (3.4) state: c* = a*, zone case 1, or 3 at a* = 1/2
    !> (JKR: P* = -Infinity there, full contact never releases).
