@@ -4,6 +4,7 @@
 !> when the whole table was written.
 program wavyadhesion_cli
    use, intrinsic :: iso_fortran_env, only: error_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wavyadhesion
    use wa_cli_options, only: cli_options, parse_command_line, model_name, given, si_given
    use wa_cli_table, only: write_header, write_row, format_real
@@ -47,6 +48,8 @@ program wavyadhesion_cli
       call run_critical(opts, params, rows_failed)
    case ("map")
       call run_map(opts)
+   case ("profile")
+      call run_profile(opts, params)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
@@ -121,11 +124,12 @@ contains
          n_rows = n_rows + n
       end do
       call write_header(out, opts%format, "equilibria at given a*", model_name(opts%model), &
-         params, "a_star c_star P_star zone_case", &
-         [character(len=60) :: "zone_case: 1 a*<c*<1/2, 2 c*=1/2, 3 full contact"])
+         params, "a_star c_star P_star zone_case gbar", &
+         [character(len=70) :: "zone_case: 1 a*<c*<1/2, 2 c*=1/2, 3 full contact", &
+         "gbar: mean gap over Delta (NaN where not defined)"])
       do i = 1, n_rows
          call write_row(out, opts%format, [rows(i)%a_star, rows(i)%c_star, rows(i)%p_star], &
-            [rows(i)%zone_case])
+            [rows(i)%zone_case], tail=[gbar_or_nan(rows(i)%gbar)])
       end do
    end subroutine run_point
 
@@ -165,17 +169,84 @@ contains
       call trace_branch(opts%model, params, b, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
       call write_header(out, opts%format, "equilibrium branch (pseudo-arclength continuation)", &
-         model_name(opts%model), params, "a_star c_star P_star b_star zone_case stable event", &
+         model_name(opts%model), params, &
+         "a_star c_star P_star b_star zone_case stable event gbar", &
          [character(len=80) :: "b_star = a* + 0.4 (c* - a*); stable: 1 = stable under load control", &
          event_legend(1), event_legend(2), event_legend(3), &
          "zone_case: 0 no contact (MD: a* = 0, Dugdale zone |x*| < c*), 1 a*<c*<1/2,", &
-         "           2 c*=1/2, 3 full contact"])
+         "           2 c*=1/2, 3 full contact", "gbar: mean gap over Delta"])
       do i = 1, b%n
          call write_row(out, opts%format, [b%a_star(i), b%c_star(i), b%p_star(i), &
             b%a_star(i) + 0.4_wp*(b%c_star(i) - b%a_star(i))], &
-            [b%zone_case(i), merge(1, 0, b%stable(i)), b%event(i)])
+            [b%zone_case(i), merge(1, 0, b%stable(i)), b%event(i)], tail=[gbar_or_nan(b%gbar(i))])
       end do
    end subroutine run_branch
+
+   !> The mean gap as printed: NaN where it is not defined (e.g. DW at a* = 0).
+   elemental real(wp) function gbar_or_nan(g)
+      real(wp), intent(in) :: g
+      gbar_or_nan = g
+      if (.not. (g >= 0.0_wp .and. g <= huge(g))) gbar_or_nan = ieee_value(g, ieee_quiet_nan)
+   end function gbar_or_nan
+
+   !> profile: traction and gap of one state at --n points x* from -1/2 to 1/2.
+   subroutine run_profile(opts, params)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      real(wp), allocatable :: x(:), traction(:), gap(:)
+      type(state_type) :: state
+      character(len=256) :: msg
+      character(len=60) :: which
+      character(len=100) :: notes(5)
+      real(wp) :: a_star, c_star
+      integer :: i, n, status
+
+      if (.not. allocated(opts%a_star)) call usage_error("profile needs --a-star X")
+      a_star = single(opts%a_star, "--a-star")
+      if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp)) call usage_error("--a-star: "// &
+         format_real(a_star)//" is outside its valid range [0, 1/2]")
+      n = opts%n_points
+      allocate (x(n), traction(n), gap(n))
+      do i = 1, n
+         x(i) = -0.5_wp + real(i - 1, wp)/real(n - 1, wp)
+      end do
+      msg = ""
+      if (allocated(opts%c_star)) then
+         c_star = single(opts%c_star, "--c-star")
+         call model_profile(opts%model, params, a_star, x, traction, gap, state, status, msg, &
+            c_star)
+         which = "the state with c* nearest --c-star"
+      else
+         call model_profile(opts%model, params, a_star, x, traction, gap, state, status, msg)
+         which = "the principal state"
+      end if
+      if (status == wa_invalid_argument) call usage_error("--"//trim(msg))
+      if (status /= wa_ok) call numerical_error(status, trim(msg))
+      notes(1) = "state: "//which
+      notes(2) = "a_star = "//format_real(state%a_star)//"  c_star = "// &
+         format_real(state%c_star)
+      notes(3) = "P_star = "//format_real(state%p_star)//"  zone_case = "// &
+         zone_text(state%zone_case)
+      notes(4) = "gbar = "//format_real(gbar_or_nan(state%gbar))//" (mean gap over Delta)"
+      notes(5) = "traction: p/p* (positive = compressive); gap: h/Delta (0 on the contact)"
+      call write_header(out, opts%format, "traction and gap profiles of one state", &
+         model_name(opts%model), params, "x_star traction gap", notes)
+      do i = 1, n
+         call write_row(out, opts%format, [x(i), traction(i), gap(i)])
+      end do
+   end subroutine run_profile
+
+   !> "1 (a*<c*<1/2)" and so on.
+   function zone_text(zone) result(text)
+      integer, intent(in) :: zone
+      character(len=:), allocatable :: text
+      select case (zone)
+      case (0); text = "0 (no contact: Dugdale zone |x*| < c*)"
+      case (1); text = "1 (a* < c* < 1/2)"
+      case (2); text = "2 (c* = 1/2)"
+      case default; text = "3 (full contact)"
+      end select
+   end function zone_text
 
    !> path: the events of loading (stage 1) and unloading (stage 2).
    subroutine run_path(opts, params)
@@ -453,7 +524,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(39) = [character(len=100) :: &
+      character(len=100), parameter :: text(45) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -464,6 +535,8 @@ contains
          "  branch    the equilibrium curve P*(a*), c*(a*) with folds and case switches", &
          "            (default; alpha=0.3, mu=1, dw)", &
          "  point     every equilibrium at given a*: --a-star X[,X...]", &
+         "  profile   traction and gap of one state over x* in [-1/2, 1/2]: --a-star X", &
+         "            [--c-star C] (default: the principal state) [--n N] (default 201)", &
          "  path      loading and unloading under load control: jumps, full contact,", &
          "            pull-off", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
@@ -480,7 +553,11 @@ contains
          "                     N values of mu from LO to HI (critical, map; not with --mu)", &
          "  --alpha-range LO:HI:N[:log]", &
          "                     N values of alpha (map only; not with --alpha)", &
-         "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &
+         "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point;", &
+         "                     profile: one value)", &
+         "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
+         "                     Dugdale zone half-width of a state without contact)", &
+         "  --n N              profile: number of points, in [2, 100000] (default 201)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &
          "                     replaced only once the whole table is written", &

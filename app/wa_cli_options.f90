@@ -19,6 +19,9 @@ module wa_cli_options
       character(len=:), allocatable :: command
       integer :: model = model_dw
       real(wp), allocatable :: alpha(:), mu(:), a_star(:)
+      !> profile: the state's c* (not allocated: the principal state) and the points
+      real(wp), allocatable :: c_star(:)
+      integer :: n_points = 201
       character(len=:), allocatable :: format, output
       logical :: help = .false., version = .false.
       !> SI inputs (NaN when not given)
@@ -47,10 +50,10 @@ contains
          end if
       end if
       select case (opts%command)
-      case ("point", "branch", "path", "critical", "map")
+      case ("point", "branch", "path", "critical", "map", "profile")
       case default
-         error = "unknown subcommand '"//opts%command// &
-            "' (expected point, branch, path, critical or map)"
+         error = "unknown subcommand '"//opts%command//"' (expected point, branch, path, "// &
+            "critical, map or profile)"
          return
       end select
       do while (i <= n)
@@ -111,8 +114,12 @@ contains
          error = "--alpha and --alpha-range cannot be used together (give one)"
       else if (opts%command == "map" .and. (given(opts, "--mu") .or. si_given(opts))) then
          error = "map covers a range of mu: use --mu-range LO:HI:N:log, not --mu or SI input"
-      else if (given(opts, "--a-star") .and. opts%command /= "point") then
-         error = "--a-star is only for the point subcommand"
+      else if (given(opts, "--a-star") .and. opts%command /= "point" .and. &
+            opts%command /= "profile") then
+         error = "--a-star is only for the point and profile subcommands"
+      else if ((given(opts, "--c-star") .or. given(opts, "--n")) .and. &
+            opts%command /= "profile") then
+         error = "--c-star and --n are only for the profile subcommand"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
@@ -168,6 +175,8 @@ contains
       case ("--alpha"); call parse_real_list(val, "--alpha", opts%alpha, error)
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
+      case ("--c-star"); call parse_real_list(val, "--c-star", opts%c_star, error)
+      case ("--n"); call parse_count(val, opts%n_points, error)
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
       case ("--alpha-range"); call parse_mu_range(val, opts%alpha, error, "--alpha-range")
       case ("--format")
@@ -217,6 +226,20 @@ contains
          start = start + comma
       end do
    end subroutine parse_real_list
+
+   !> --n N: the number of profile points, an integer in [2, 100000].
+   subroutine parse_count(text, n, error)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: n
+      character(len=:), allocatable, intent(out) :: error
+      integer :: ios
+      n = 0
+      ios = 1
+      if (len(text) > 0 .and. len(text) <= 6 .and. verify(text, "0123456789") == 0) &
+         read (text, *, iostat=ios) n
+      if (ios /= 0 .or. n < 2 .or. n > max_values) &
+         error = "--n: '"//text//"' is not an integer in [2, 100000]"
+   end subroutine parse_count
 
    !> LO:HI:N[:log] -> N values of mu from LO to HI, linear or log-spaced.
    subroutine parse_mu_range(text, values, error, option)
@@ -374,7 +397,7 @@ contains
       select case (name)
       case ("--alpha"); range = "[1e-12, 1e12]"         ! as wa_params states them
       case ("--mu"); range = "0 or [1e-100, 1e100]"
-      case ("--a-star"); range = "[0, 1/2]"
+      case ("--a-star", "--c-star"); range = "[0, 1/2]"
       case ("--E1", "--E2", "--Estar"); range = "(0, inf) Pa"
       case ("--nu1", "--nu2"); range = "(-1, 1/2]"
       case ("--period", "--amplitude"); range = "(0, inf) m"

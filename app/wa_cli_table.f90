@@ -39,14 +39,17 @@ contains
       call put_line(out, "# columns: "//columns)
    end subroutine write_header
 
-   !> One row: reals then integers, separated by blanks (table) or commas (csv).
-   subroutine write_row(out, format, reals, ints, prefix)
+   !> One row: reals, integers, then the reals of `tail`, separated by blanks (table) or
+   !> commas (csv).
+   subroutine write_row(out, format, reals, ints, prefix, tail)
       type(sink_type), intent(inout) :: out
       character(len=*), intent(in) :: format
       real(wp), intent(in) :: reals(:)
       integer, intent(in), optional :: ints(:)
       !> Text before the reals (e.g. integer columns that come first)
       character(len=*), intent(in), optional :: prefix
+      !> Reals after the integers (e.g. gbar at the end of point and branch rows)
+      real(wp), intent(in), optional :: tail(:)
       character(len=:), allocatable :: line, sep
       character(len=12) :: itext
       integer :: i
@@ -62,6 +65,11 @@ contains
          do i = 1, size(ints)
             write (itext, '(i0)') ints(i)
             line = line//sep//trim(itext)
+         end do
+      end if
+      if (present(tail)) then
+         do i = 1, size(tail)
+            line = line//sep//adjustr_field(format_real(tail(i)), format)
          end do
       end if
       call put_line(out, line)

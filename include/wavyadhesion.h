@@ -58,6 +58,7 @@ extern "C" {
 #define WA_ZONE_INSIDE 1        /* a* < c* < 1/2 */
 #define WA_ZONE_WHOLE_PERIOD 2  /* a* < c* = 1/2 */
 #define WA_ZONE_FULL_CONTACT 3  /* a* = c* = 1/2 */
+#define WA_ZONE_NO_CONTACT 0    /* MD only: a* = 0, a Dugdale zone |x*| < c* (zone_no_contact) */
 
 /* Event codes of branch points and load-path events (event_* in the Fortran module
    wa_branch; the same codes as the command line's `event` column). */
@@ -152,6 +153,67 @@ int wa_trace_branch_msg(int model, double alpha, double mu, int capacity,
                         double *a_star, double *c_star, double *P_star, int *zone_case,
                         int *stable, int *event, int *n_points,
                         char *message, int message_capacity);
+
+/* Separation (doc/c-api.md, "Profiles and the mean gap"): the mean gap gbar* = gbar/Delta
+   (mean of the gap h over one period; 0 in full contact, 1 for the undeformed wave
+   touching at its crest) of the states the functions above return, through _gap
+   variants with one more output. On WA_OK every gbar is finite and >= 0; where the mean
+   gap of a state is not defined (DW at a* = 0: no contact) the call fails with
+   WA_NO_SOLUTION. */
+
+/* As wa_equilibrium, and *gbar receives the state's mean gap. On any failure *c_star =
+   *P_star = *gbar = NaN and *zone_case = 0 (each one that is not NULL). */
+int wa_equilibrium_gap(int model, double alpha, double mu, double a_star,
+                       double *c_star, double *P_star, int *zone_case, double *gbar);
+
+/* As wa_equilibrium_gap, with the message of wa_equilibrium_msg. */
+int wa_equilibrium_gap_msg(int model, double alpha, double mu, double a_star,
+                           double *c_star, double *P_star, int *zone_case, double *gbar,
+                           char *message, int message_capacity);
+
+/* As wa_roots, and gbar[] (capacity elements, like the other arrays) receives each
+   state's mean gap. */
+int wa_roots_gap(int model, double alpha, double mu, double a_star, int capacity,
+                 double *c_star, double *P_star, int *zone_case, double *gbar,
+                 int *n_roots);
+
+/* As wa_roots_gap, with the message of wa_equilibrium_msg. */
+int wa_roots_gap_msg(int model, double alpha, double mu, double a_star, int capacity,
+                     double *c_star, double *P_star, int *zone_case, double *gbar,
+                     int *n_roots, char *message, int message_capacity);
+
+/* As wa_trace_branch, and gbar[] (capacity elements) receives each point's mean gap. */
+int wa_trace_branch_gap(int model, double alpha, double mu, int capacity,
+                        double *a_star, double *c_star, double *P_star, int *zone_case,
+                        int *stable, int *event, double *gbar, int *n_points);
+
+/* As wa_trace_branch_gap, with the message of wa_equilibrium_msg. */
+int wa_trace_branch_gap_msg(int model, double alpha, double mu, int capacity,
+                            double *a_star, double *c_star, double *P_star, int *zone_case,
+                            int *stable, int *event, double *gbar, int *n_points,
+                            char *message, int message_capacity);
+
+/* Profile of one state: traction[i] = p/p* (positive = compressive) and gap[i] = h/Delta
+   at x_star[i], i < n (x* = x/L, any finite value: period 1, crest at x* = 0). The state
+   is the one at a_star whose c* is nearest c_star among the roots of wa_roots; it must
+   lie within 1e-6 of c_star (Westergaard, JKR: c* = a*). MD at a_star = 0: the state
+   without contact whose Dugdale zone |x*| < c_star pulls the crest (c_star < 1/2).
+   On WA_OK every gap is finite and >= 0 (0 on the contact; MD: the Dugdale opening at
+   |x*| = c*) and every traction finite, except JKR's -INFINITY exactly at |x*| = a*
+   (folded into [0, 1/2] by |x* - round(x*)|). WA_INVALID_ARGUMENT: model, alpha, mu,
+   a_star or c_star (in [0, 1/2]) invalid, n < 0, an array NULL while n > 0, or an x_star
+   not finite. WA_NO_SOLUTION: no state at a_star has that c* (the message gives the
+   nearest), MD at a_star = 0 with no no-contact state at c_star (the crest would touch)
+   or c_star = 1/2 (not one state), DW at a_star = 0, JKR at a_star = 1/2 (full contact
+   at any load). n = 0 only identifies the state. On any failure, when n > 0, every
+   element of traction and gap (each that is not NULL) is NaN. */
+int wa_profile(int model, double alpha, double mu, double a_star, double c_star, int n,
+               const double *x_star, double *traction, double *gap);
+
+/* As wa_profile, with the message of wa_equilibrium_msg. */
+int wa_profile_msg(int model, double alpha, double mu, double a_star, double c_star, int n,
+                   const double *x_star, double *traction, double *gap, char *message,
+                   int message_capacity);
 
 /* Critical forces under load control: *P_fc receives the load at which full contact is
    first reached on loading from separation at P* = 0, *P_pf the pull-off load on

@@ -10,13 +10,13 @@
 module wa_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_char, &
       c_associated, c_f_pointer, c_loc, c_null_ptr
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use wa_status, only: wa_ok, wa_invalid_argument, wa_capacity_too_small, &
-      wa_numerical_error, set_error
+      wa_numerical_error, wa_no_solution, set_error
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type
    use wa_kernels, only: westergaard_load, jkr_load
-   use wa_models, only: check_model, model_equilibrium, model_roots
+   use wa_models, only: check_model, model_equilibrium, model_roots, model_profile
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
    use wa_release, only: wa_version
@@ -31,6 +31,8 @@ module wa_capi
       capi_critical_sweep_msg, capi_critical_sweep_status
    public :: capi_version
    public :: capi_adhesion_map
+   public :: capi_profile, capi_profile_msg, capi_equilibrium_gap, capi_equilibrium_gap_msg, &
+      capi_roots_gap, capi_roots_gap_msg, capi_trace_branch_gap, capi_trace_branch_gap_msg
 
    !> Length of one status text, NUL included.
    integer, parameter :: text_len = 32
@@ -487,6 +489,270 @@ contains
       call copy_message(msg, message, message_capacity)
    end function capi_critical_sweep_status
 
+   !> int wa_profile(model, alpha, mu, a_star, c_star, n, x_star[], traction[], gap[]):
+   !> the traction p/p* and the gap h/Delta at n points x* of the state at a* identified
+   !> by c* (wa_models::model_state: the root at a* with the nearest c*, within 1e-6; MD
+   !> at a* = 0: the no-contact state with zone half-width c* < 1/2). On any failure,
+   !> when n > 0, every element of traction and gap (each not NULL) is NaN.
+   function capi_profile(model, alpha, mu, a_star, c_star, n, x_star, traction, gap) &
+         result(status) bind(C, name="wa_profile")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> Interaction-zone half-width of the state, in [0, 1/2]
+      real(c_double), value, intent(in) :: c_star
+      !> Number of points, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: n
+      !> const double[n]: the points x* (any finite values; period 1, crest at 0)
+      type(c_ptr), value, intent(in) :: x_star
+      !> double[n]: receives p/p* (positive = compressive)
+      type(c_ptr), value, intent(in) :: traction
+      !> double[n]: receives h/Delta (>= 0, 0 on the contact)
+      type(c_ptr), value, intent(in) :: gap
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call profile_core(model, alpha, mu, a_star, c_star, n, x_star, traction, gap, status, &
+         msg)
+   end function capi_profile
+
+   !> int wa_profile_msg(..., char *message, int message_capacity): as wa_profile, with
+   !> the message of wa_equilibrium_msg.
+   function capi_profile_msg(model, alpha, mu, a_star, c_star, n, x_star, traction, gap, &
+         message, message_capacity) result(status) bind(C, name="wa_profile_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> Interaction-zone half-width of the state, in [0, 1/2]
+      real(c_double), value, intent(in) :: c_star
+      !> Number of points, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: n
+      !> const double[n]: the points x* (any finite values; period 1, crest at 0)
+      type(c_ptr), value, intent(in) :: x_star
+      !> double[n]: receives p/p* (positive = compressive)
+      type(c_ptr), value, intent(in) :: traction
+      !> double[n]: receives h/Delta (>= 0, 0 on the contact)
+      type(c_ptr), value, intent(in) :: gap
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call profile_core(model, alpha, mu, a_star, c_star, n, x_star, traction, gap, status, &
+         msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_profile_msg
+
+   !> int wa_equilibrium_gap(model, alpha, mu, a_star, *c_star, *P_star, *zone_case,
+   !> *gbar): as wa_equilibrium, and the mean gap gbar* = gbar/Delta of the state. On
+   !> failure *c_star = *P_star = *gbar = NaN, *zone_case = 0.
+   function capi_equilibrium_gap(model, alpha, mu, a_star, c_star, p_star, zone_case, gbar) &
+         result(status) bind(C, name="wa_equilibrium_gap")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> double *: receives c*
+      type(c_ptr), value, intent(in) :: c_star
+      !> double *: receives P*
+      type(c_ptr), value, intent(in) :: p_star
+      !> int *: receives the zone case (1, 2 or 3)
+      type(c_ptr), value, intent(in) :: zone_case
+      !> double *: receives gbar*
+      type(c_ptr), value, intent(in) :: gbar
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call equilibrium_core(model, alpha, mu, a_star, c_star, p_star, zone_case, status, msg, &
+         gbar)
+   end function capi_equilibrium_gap
+
+   !> int wa_equilibrium_gap_msg(..., char *message, int message_capacity): as
+   !> wa_equilibrium_gap, with the message of wa_equilibrium_msg.
+   function capi_equilibrium_gap_msg(model, alpha, mu, a_star, c_star, p_star, zone_case, &
+         gbar, message, message_capacity) result(status) bind(C, name="wa_equilibrium_gap_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> double *: receives c*
+      type(c_ptr), value, intent(in) :: c_star
+      !> double *: receives P*
+      type(c_ptr), value, intent(in) :: p_star
+      !> int *: receives the zone case (1, 2 or 3)
+      type(c_ptr), value, intent(in) :: zone_case
+      !> double *: receives gbar*
+      type(c_ptr), value, intent(in) :: gbar
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call equilibrium_core(model, alpha, mu, a_star, c_star, p_star, zone_case, status, msg, &
+         gbar)
+      call copy_message(msg, message, message_capacity)
+   end function capi_equilibrium_gap_msg
+
+   !> int wa_roots_gap(model, alpha, mu, a_star, capacity, c_star[], P_star[],
+   !> zone_case[], gbar[], *n_roots): as wa_roots, and the mean gap of each state.
+   function capi_roots_gap(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
+         gbar, n_roots) result(status) bind(C, name="wa_roots_gap")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> Length of the four arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives c* of each state
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each state
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each state
+      type(c_ptr), value, intent(in) :: zone_case
+      !> double[capacity]: receives gbar* of each state
+      type(c_ptr), value, intent(in) :: gbar
+      !> int *: receives the number of states
+      type(c_ptr), value, intent(in) :: n_roots
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call roots_core(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
+         n_roots, status, msg, gbar)
+   end function capi_roots_gap
+
+   !> int wa_roots_gap_msg(..., char *message, int message_capacity): as wa_roots_gap,
+   !> with the message of wa_equilibrium_msg.
+   function capi_roots_gap_msg(model, alpha, mu, a_star, capacity, c_star, p_star, &
+         zone_case, gbar, n_roots, message, message_capacity) result(status) &
+         bind(C, name="wa_roots_gap_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Contact half-width over the period, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> Length of the four arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives c* of each state
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each state
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each state
+      type(c_ptr), value, intent(in) :: zone_case
+      !> double[capacity]: receives gbar* of each state
+      type(c_ptr), value, intent(in) :: gbar
+      !> int *: receives the number of states
+      type(c_ptr), value, intent(in) :: n_roots
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call roots_core(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
+         n_roots, status, msg, gbar)
+      call copy_message(msg, message, message_capacity)
+   end function capi_roots_gap_msg
+
+   !> int wa_trace_branch_gap(model, alpha, mu, capacity, a_star[], c_star[], P_star[],
+   !> zone_case[], stable[], event[], gbar[], *n_points): as wa_trace_branch, and the
+   !> mean gap of each point.
+   function capi_trace_branch_gap(model, alpha, mu, capacity, a_star, c_star, p_star, &
+         zone_case, stable, event, gbar, n_points) result(status) &
+         bind(C, name="wa_trace_branch_gap")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the seven arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives a* of each point
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each point
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each point
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each point
+      type(c_ptr), value, intent(in) :: zone_case
+      !> int[capacity]: receives 1 where stable under load control, else 0
+      type(c_ptr), value, intent(in) :: stable
+      !> int[capacity]: receives the event code of each point (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> double[capacity]: receives gbar* of each point
+      type(c_ptr), value, intent(in) :: gbar
+      !> int *: receives the number of points
+      type(c_ptr), value, intent(in) :: n_points
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star, gbar], &
+         [zone_case, stable, event], n_points, status, msg)
+   end function capi_trace_branch_gap
+
+   !> int wa_trace_branch_gap_msg(..., char *message, int message_capacity): as
+   !> wa_trace_branch_gap, with the message of wa_equilibrium_msg.
+   function capi_trace_branch_gap_msg(model, alpha, mu, capacity, a_star, c_star, p_star, &
+         zone_case, stable, event, gbar, n_points, message, message_capacity) &
+         result(status) bind(C, name="wa_trace_branch_gap_msg")
+      !> WA_MODEL_WESTERGAARD, WA_MODEL_JKR, WA_MODEL_DW or WA_MODEL_MD
+      integer(c_int), value, intent(in) :: model
+      !> Johnson's parameter, > 0
+      real(c_double), value, intent(in) :: alpha
+      !> Transition parameter, >= 0
+      real(c_double), value, intent(in) :: mu
+      !> Length of the seven arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: receives a* of each point
+      type(c_ptr), value, intent(in) :: a_star
+      !> double[capacity]: receives c* of each point
+      type(c_ptr), value, intent(in) :: c_star
+      !> double[capacity]: receives P* of each point
+      type(c_ptr), value, intent(in) :: p_star
+      !> int[capacity]: receives the zone case of each point
+      type(c_ptr), value, intent(in) :: zone_case
+      !> int[capacity]: receives 1 where stable under load control, else 0
+      type(c_ptr), value, intent(in) :: stable
+      !> int[capacity]: receives the event code of each point (WA_EVENT_*)
+      type(c_ptr), value, intent(in) :: event
+      !> double[capacity]: receives gbar* of each point
+      type(c_ptr), value, intent(in) :: gbar
+      !> int *: receives the number of points
+      type(c_ptr), value, intent(in) :: n_points
+      !> char *: receives the message (may be NULL)
+      type(c_ptr), value, intent(in) :: message
+      !> Size of `message` in bytes, NUL included
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      character(len=msg_len) :: msg
+      call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star, gbar], &
+         [zone_case, stable, event], n_points, status, msg)
+      call copy_message(msg, message, message_capacity)
+   end function capi_trace_branch_gap_msg
+
    !> const char *wa_status_message(int status): a static NUL-terminated text, never
    !> NULL ("unknown status" for codes the library does not return).
    function capi_status_message(status) result(text) bind(C, name="wa_status_message")
@@ -510,15 +776,17 @@ contains
 
    ! ---------------------------------------------------------------- internals
 
-   !> Validate, solve, write the principal state (NaN, NaN, 0 on failure).
+   !> Validate, solve, write the principal state (NaN, NaN, 0 on failure); with gbar
+   !> (wa_equilibrium_gap) also its mean gap (NaN on failure).
    subroutine equilibrium_core(model, alpha, mu, a_star, c_star, p_star, zone_case, &
-         status, msg)
+         status, msg, gbar)
       integer(c_int), intent(in) :: model
       real(c_double), intent(in) :: alpha, mu, a_star
       type(c_ptr), intent(in) :: c_star, p_star, zone_case
       integer(c_int), intent(out) :: status
       character(len=*), intent(out) :: msg
-      real(c_double), pointer :: c_out, p_out
+      type(c_ptr), intent(in), optional :: gbar
+      real(c_double), pointer :: c_out, p_out, g_out
       integer(c_int), pointer :: z_out
       type(params_type) :: params
       type(state_type) :: state
@@ -528,6 +796,7 @@ contains
       call put_nan(c_star)
       call put_nan(p_star)
       call put_int(zone_case, 0)
+      if (present(gbar)) call put_nan(gbar)
       if (.not. (c_associated(c_star) .and. c_associated(p_star) .and. &
             c_associated(zone_case))) then
          call set_error(wa_invalid_argument, "c_star, P_star and zone_case must not be NULL", &
@@ -535,12 +804,26 @@ contains
          status = int(stat, c_int)
          return
       end if
+      if (present(gbar)) then
+         if (.not. c_associated(gbar)) then
+            call set_error(wa_invalid_argument, "gbar must not be NULL", stat, msg)
+            status = int(stat, c_int)
+            return
+         end if
+      end if
       call c_f_pointer(c_star, c_out)
       call c_f_pointer(p_star, p_out)
       call c_f_pointer(zone_case, z_out)
       call check_model(int(model), stat, msg)
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call model_equilibrium(int(model), params, a_star, state, stat, msg)
+      if (stat == wa_ok .and. present(gbar)) then
+         call check_gbar([state], stat, msg)
+         if (stat == wa_ok) then
+            call c_f_pointer(gbar, g_out)
+            g_out = state%gbar
+         end if
+      end if
       if (stat == wa_ok) then
          c_out = state%c_star
          p_out = state%p_star
@@ -550,14 +833,15 @@ contains
    end subroutine equilibrium_core
 
    !> Validate, solve, write min(n, capacity) states and n (0 on failures other than
-   !> a too small capacity).
+   !> a too small capacity); with gbar (wa_roots_gap) also their mean gaps.
    subroutine roots_core(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
-         n_roots, status, msg)
+         n_roots, status, msg, gbar)
       integer(c_int), intent(in) :: model, capacity
       real(c_double), intent(in) :: alpha, mu, a_star
       type(c_ptr), intent(in) :: c_star, p_star, zone_case, n_roots
       integer(c_int), intent(out) :: status
       character(len=*), intent(out) :: msg
+      type(c_ptr), intent(in), optional :: gbar
       integer(c_int), pointer :: n_out
       type(params_type) :: params
       type(state_type), allocatable :: states(:)
@@ -566,6 +850,10 @@ contains
       msg = ""
       call put_int(n_roots, 0)
       call check_roots_pointers(capacity, c_star, p_star, zone_case, n_roots, stat, msg)
+      if (stat == wa_ok .and. present(gbar)) then
+         if (capacity > 0 .and. .not. c_associated(gbar)) call set_error( &
+            wa_invalid_argument, "gbar must not be NULL when capacity > 0", stat, msg)
+      end if
       if (stat /= wa_ok) then
          status = int(stat, c_int)
          return
@@ -586,8 +874,13 @@ contains
             call model_roots(int(model), params, a_star, states, n, stat, msg)
          end if
       end if
+      if (present(gbar) .and. (stat == wa_ok .or. stat == wa_capacity_too_small)) then
+         call check_gbar(states(1:min(n, size(states))), stat, msg)
+         if (stat /= wa_ok .and. stat /= wa_capacity_too_small) n = 0
+      end if
       if (stat == wa_ok .or. stat == wa_capacity_too_small) then
          call store_states(states(1:min(n, size(states))), c_star, p_star, zone_case)
+         if (present(gbar)) call store_reals(gbar, states(1:min(n, size(states)))%gbar)
          n_out = int(n, c_int)
       end if
       status = int(stat, c_int)
@@ -635,12 +928,12 @@ contains
    end subroutine store_states
 
    !> Validate, trace, write min(n, capacity) points and n (0 on failures other than a
-   !> too small capacity). reals = [a_star, c_star, P_star], ints = [zone_case, stable,
-   !> event].
+   !> too small capacity). reals = [a_star, c_star, P_star] (wa_trace_branch_gap: and
+   !> gbar), ints = [zone_case, stable, event].
    subroutine branch_core(model, alpha, mu, capacity, reals, ints, n_points, status, msg)
       integer(c_int), intent(in) :: model, capacity
       real(c_double), intent(in) :: alpha, mu
-      type(c_ptr), intent(in) :: reals(3), ints(3), n_points
+      type(c_ptr), intent(in) :: reals(:), ints(3), n_points
       integer(c_int), intent(out) :: status
       character(len=*), intent(out) :: msg
       integer(c_int), pointer :: n_out
@@ -650,8 +943,13 @@ contains
 
       msg = ""
       call put_int(n_points, 0)
-      call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
-         "a_star, c_star, P_star, zone_case, stable and event", stat, msg)
+      if (size(reals) == 4) then
+         call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
+            "a_star, c_star, P_star, zone_case, stable, event and gbar", stat, msg)
+      else
+         call check_outputs("n_points", n_points, "capacity", capacity, [reals, ints], &
+            "a_star, c_star, P_star, zone_case, stable and event", stat, msg)
+      end if
       if (stat /= wa_ok) then
          status = int(stat, c_int)
          return
@@ -661,8 +959,11 @@ contains
       if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
       if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, msg)
       call internal_capacity(stat, msg)
+      if (stat == wa_ok .and. size(reals) == 4) call check_gbar_values(branch%gbar(1:branch%n), &
+         stat, msg)
       if (stat == wa_ok) then
          m = min(branch%n, int(capacity))
+         if (size(reals) == 4) call store_reals(reals(4), branch%gbar(1:m))
          call store_reals(reals(1), branch%a_star(1:m))
          call store_reals(reals(2), branch%c_star(1:m))
          call store_reals(reals(3), branch%p_star(1:m))
@@ -834,6 +1135,85 @@ contains
       end if
       status = int(stat, c_int)
    end subroutine sweep_core
+
+   !> wa_ok when every state's mean gap is a number >= 0, else wa_no_solution (never a
+   !> NaN or the "not computed" -1 with an OK status).
+   subroutine check_gbar(states, stat, msg)
+      type(state_type), intent(in) :: states(:)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: msg
+      call check_gbar_values(states%gbar, stat, msg)
+   end subroutine check_gbar
+
+   !> As check_gbar, for the values.
+   subroutine check_gbar_values(gbar, stat, msg)
+      real(c_double), intent(in) :: gbar(:)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: msg
+      integer :: k
+      do k = 1, size(gbar)
+         if (.not. (gbar(k) >= 0.0_c_double .and. gbar(k) <= huge(gbar(k)))) then
+            call set_error(wa_no_solution, "gbar: the mean gap of a state is not defined "// &
+               "(not a finite number >= 0)", stat, msg)
+            return
+         end if
+      end do
+   end subroutine check_gbar_values
+
+   !> Validate, identify the state (model_state), write its profile at n points (every
+   !> element of traction and gap NaN on any failure, when n > 0 and they are not NULL).
+   subroutine profile_core(model, alpha, mu, a_star, c_star, n, x_star, traction, gap, &
+         status, msg)
+      integer(c_int), intent(in) :: model, n
+      real(c_double), intent(in) :: alpha, mu, a_star, c_star
+      type(c_ptr), intent(in) :: x_star, traction, gap
+      integer(c_int), intent(out) :: status
+      character(len=*), intent(out) :: msg
+      real(c_double), pointer :: x_in(:), t_out(:), g_out(:)
+      real(c_double), allocatable :: t(:), g(:)
+      type(params_type) :: params
+      type(state_type) :: state
+      integer :: stat, k
+      character(len=12) :: text
+
+      msg = ""
+      if (n > 0) then
+         call put_nans(traction, n)
+         call put_nans(gap, n)
+      end if
+      call check_outputs("", x_star, "n", n, [x_star, traction, gap], &
+         "x_star, traction and gap", stat, msg)
+      if (stat == wa_ok) call check_model(int(model), stat, msg)
+      if (stat == wa_ok) call new_params(alpha, mu, params, stat, msg)
+      if (stat == wa_ok .and. n > 0) then         ! every argument before any work
+         call c_f_pointer(x_star, x_in, [n])
+         do k = 1, int(n)
+            if (.not. ieee_is_finite(x_in(k))) then
+               write (text, '(i0)') k - 1
+               call set_error(wa_invalid_argument, "x_star["//trim(text)//"]: not a "// &
+                  "finite number (any finite x* is valid: the period is 1)", stat, msg)
+               exit
+            end if
+         end do
+      end if
+      if (stat == wa_ok) then
+         allocate (t(max(0, n)), g(max(0, n)))
+         if (n > 0) then
+            call model_profile(int(model), params, a_star, x_in, t, g, state, stat, msg, &
+               c_star)
+         else
+            call model_profile(int(model), params, a_star, [real(c_double) ::], t, g, state, &
+               stat, msg, c_star)
+         end if
+         if (stat == wa_ok .and. n > 0) then
+            call c_f_pointer(traction, t_out, [n])
+            call c_f_pointer(gap, g_out, [n])
+            t_out = t
+            g_out = g
+         end if
+      end if
+      status = int(stat, c_int)
+   end subroutine profile_core
 
    !> The count pointer must not be NULL (when count_name is not empty); the size >= 0;
    !> the arrays not NULL unless the size is 0.

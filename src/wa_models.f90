@@ -5,7 +5,9 @@
 !> Shared by the C interface, the Python facade and the command-line driver.
 module wa_models
    use wa_kinds, only: wp
-   use wa_status, only: wa_ok, wa_invalid_argument, wa_capacity_too_small, set_error
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_capacity_too_small, &
+      wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_full_contact, model_westergaard, &
@@ -13,15 +15,19 @@ module wa_models
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_roots
    use wa_md, only: md_equilibrium, md_roots
-   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap
+   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, md_no_contact_state, &
+      state_profile
    implicit none
    private
 
-   public :: check_model, model_equilibrium, model_roots
+   public :: check_model, model_equilibrium, model_roots, model_state, model_profile
 
    !> The most states one (alpha, mu, a*) can have in any model (DW's root scan keeps at
    !> most 48); internal callers size their buffers with it.
    integer, parameter, public :: max_model_roots = 48
+
+   !> model_state: a state at a* is identified by its c* to within this (absolute).
+   real(wp), parameter, public :: state_c_tolerance = 1.0e-6_wp
 
 contains
 
@@ -114,6 +120,145 @@ contains
          end if
       end select
    end subroutine model_roots
+
+   !> The solved state of `model` at a* that `c_star` identifies (for its profile,
+   !> wa_separation::state_profile): among the roots at a* (model_roots) the one with the
+   !> nearest c*, wa_no_solution when none lies within state_c_tolerance (1e-6) of c_star
+   !> (Westergaard, JKR: c* = a*). MD at a* = 0: the no-contact state with zone half-width
+   !> c_star < 1/2 (md_no_contact_state; at c* = 1/2 the crest gap is free: no single
+   !> state). Without c_star: the principal state (model_equilibrium; MD at a* = 0 needs
+   !> c_star). wa_no_solution also for JKR at a* = 1/2 (full contact at any load) and DW at
+   !> a* = 0 (no contact: DW has no states without contact).
+   pure subroutine model_state(model, params, a_star, state, status, errmsg, c_star)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
+      integer, intent(in) :: model
+      !> Validated parameters (new_params)
+      type(params_type), intent(in) :: params
+      !> Contact half-width over the period, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> The state
+      type(state_type), intent(out) :: state
+      !> wa_ok or the failure's status code
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+      !> Interaction-zone half-width of the state, in [0, 1/2] (default: the principal state)
+      real(wp), intent(in), optional :: c_star
+      type(state_type) :: states(max_model_roots)
+      character(len=32) :: t_c, t_a, t_near
+      integer :: n, k, best
+
+      call check_model(model, status, errmsg)
+      if (status /= wa_ok) return
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return
+      if (present(c_star)) then
+         call check_range("c_star", c_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+         if (status /= wa_ok) return
+      end if
+      if (model == model_jkr .and. a_star == 0.5_wp) then
+         call set_error(wa_no_solution, "jkr: full contact (a_star = 1/2) holds at any "// &
+            "load: it is not one state", status, errmsg)
+         return
+      end if
+      if (model == model_dw .and. a_star == 0.0_wp) then
+         call set_error(wa_no_solution, "dw: a_star = 0 is no contact, and DW has no "// &
+            "states without contact (give 0 < a_star <= 1/2)", status, errmsg)
+         return
+      end if
+      if (model == model_md .and. a_star == 0.0_wp) then
+         if (.not. present(c_star)) then
+            call set_error(wa_invalid_argument, "c_star: needed for md at a_star = 0 (the "// &
+               "no-contact states are identified by their zone half-width c*)", status, errmsg)
+         else if (c_star == 0.5_wp) then
+            call set_error(wa_no_solution, "md: at a_star = 0 and c_star = 1/2 the zone "// &
+               "covers the period and the crest gap is free: not one state (give c_star "// &
+               "< 1/2)", status, errmsg)
+         else
+            call md_no_contact_state(params, c_star, state, status, errmsg)
+         end if
+         return
+      end if
+      if (.not. present(c_star)) then
+         call model_equilibrium(model, params, a_star, state, status, errmsg)
+         return
+      end if
+      call model_roots(model, params, a_star, states, n, status, errmsg)
+      if (status /= wa_ok) return
+      best = 0
+      do k = 1, n
+         if (best == 0) then
+            best = k
+         else if (abs(states(k)%c_star - c_star) < abs(states(best)%c_star - c_star)) then
+            best = k
+         end if
+      end do
+      if (best == 0) then
+         call set_error(wa_no_solution, "no equilibrium at this a_star", status, errmsg)
+         return
+      end if
+      if (abs(states(best)%c_star - c_star) > state_c_tolerance) then
+         write (t_c, '(es24.16e3)') c_star
+         write (t_a, '(es24.16e3)') a_star
+         write (t_near, '(es24.16e3)') states(best)%c_star
+         write (t_a(25:32), '(i0)') n
+         call set_error(wa_no_solution, "c_star = "//trim(adjustl(t_c))//": no state at "// &
+            "a_star = "//trim(adjustl(t_a(1:24)))//" has c* within 1e-6 (of its "// &
+            trim(t_a(25:32))//" states the nearest has c* = "//trim(adjustl(t_near))//")", &
+            status, errmsg)
+         return
+      end if
+      state = states(best)
+   end subroutine model_state
+
+   !> Traction p/p* and gap h/Delta at every x_star of the state model_state identifies
+   !> (state receives it). Every gap is finite and >= 0, every traction finite except
+   !> JKR's -Infinity exactly at |x*| = a* (folded into [0, 1/2] as |x* - anint(x*)|):
+   !> anything else (an underflow at extreme a*) is wa_numerical_error, never returned.
+   !> traction and gap must have the size of x_star; on failure they are 0.
+   pure subroutine model_profile(model, params, a_star, x_star, traction, gap, state, &
+         status, errmsg, c_star)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
+      integer, intent(in) :: model
+      !> Validated parameters (new_params)
+      type(params_type), intent(in) :: params
+      !> Contact half-width over the period, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> The points x* (any finite values: period 1, crest at 0)
+      real(wp), intent(in) :: x_star(:)
+      !> Receive p/p* and h/Delta at each x_star
+      real(wp), intent(out) :: traction(:), gap(:)
+      !> The state
+      type(state_type), intent(out) :: state
+      !> wa_ok or the failure's status code
+      integer, intent(out) :: status
+      !> Receives the reason on failure
+      character(len=*), intent(inout), optional :: errmsg
+      !> Interaction-zone half-width of the state, in [0, 1/2] (default: the principal state)
+      real(wp), intent(in), optional :: c_star
+      character(len=12) :: text
+      integer :: i
+
+      traction = 0.0_wp
+      gap = 0.0_wp
+      call model_state(model, params, a_star, state, status, errmsg, c_star)
+      if (status /= wa_ok) return
+      call state_profile(model, params, state, x_star, traction, gap, status, errmsg)
+      if (status /= wa_ok) return
+      do i = 1, size(x_star)
+         if (ieee_is_finite(gap(i)) .and. gap(i) >= 0.0_wp) then
+            if (ieee_is_finite(traction(i))) cycle
+            if (model == model_jkr .and. traction(i) < 0.0_wp .and. &
+                  abs(x_star(i) - anint(x_star(i))) == state%a_star) cycle
+         end if
+         write (text, '(i0)') i
+         call set_error(wa_numerical_error, "profile: traction or gap not finite (or gap "// &
+            "< 0) at point "//trim(text)//" (an underflow at this a_star)", status, errmsg)
+         traction = 0.0_wp
+         gap = 0.0_wp
+         return
+      end do
+   end subroutine model_profile
 
    !> Westergaard (3.1) or JKR (3.4) state: c* = a*, zone case 1, or 3 at a* = 1/2
    !> (JKR: P* = -Infinity there, full contact never releases).

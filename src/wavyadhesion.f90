@@ -13,7 +13,8 @@ module wavyadhesion
       westergaard_displacement, westergaard_gap
    use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
    use wa_md, only: md_equilibrium, md_roots
-   use wa_models, only: check_model, model_equilibrium, model_roots
+   use wa_models, only: check_model, model_equilibrium, model_roots, model_state, &
+      model_profile, state_c_tolerance
    use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
       md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
@@ -40,7 +41,8 @@ module wavyadhesion
       westergaard_gap
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
    public :: md_equilibrium, md_roots
-   public :: check_model, model_equilibrium, model_roots
+   public :: check_model, model_equilibrium, model_roots, model_state, model_profile, &
+      state_c_tolerance
    public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap, &
       state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &

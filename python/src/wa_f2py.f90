@@ -120,8 +120,8 @@ subroutine fa_jkr_load(n, alpha, a_star, p_star, nfail, ifail, status, message)
 end subroutine fa_jkr_load
 
 !> Principal equilibrium of `model` at n points (alpha, mu, a*), broadcast by the caller.
-subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case, nfail, &
-      ifail, status, message)
+subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case, gbar, &
+      nfail, ifail, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok
@@ -145,6 +145,8 @@ subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case
    real(c_double), intent(out) :: p_star(n)
    !> Zone cases (1, 2, 3; 0 where the point failed)
    integer(c_int), intent(out) :: zone_case(n)
+   !> Mean gaps gbar* (NaN where the point failed or the mean gap is not defined)
+   real(c_double), intent(out) :: gbar(n)
    !> Number of failed points
    integer(c_int), intent(out) :: nfail
    !> Index of the first failed point (1-based, 0 if none)
@@ -164,6 +166,7 @@ subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case
    if (stat /= wa_ok) then
       nfail = n; ifail = 1; status = stat
       c_star = ieee_value(1.0_c_double, ieee_quiet_nan); p_star = c_star; zone_case = 0
+      gbar = c_star
       return
    end if
    stat_params = -1
@@ -181,10 +184,14 @@ subroutine fa_equilibrium(n, model, alpha, mu, a_star, c_star, p_star, zone_case
          c_star(i) = state%c_star
          p_star(i) = state%p_star
          zone_case(i) = int(state%zone_case, c_int)
+         gbar(i) = state%gbar
+         if (.not. (state%gbar >= 0.0_c_double .and. state%gbar <= huge(1.0_c_double))) &
+            gbar(i) = ieee_value(gbar(i), ieee_quiet_nan)
       else
          c_star(i) = ieee_value(c_star(i), ieee_quiet_nan)
          p_star(i) = c_star(i)
          zone_case(i) = 0
+         gbar(i) = c_star(i)
          nfail = nfail + 1
          if (ifail == 0) then
             ifail = i; status = stat; message = msg
@@ -196,8 +203,9 @@ end subroutine fa_equilibrium
 !> Every equilibrium of `model` at one point: the first min(n_roots, capacity) states;
 !> status 4 (capacity too small) when n_roots > capacity.
 subroutine fa_roots(capacity, model, alpha, mu, a_star, c_star, p_star, zone_case, &
-      gap_width, n_roots, status, message)
+      gap_width, gbar, n_roots, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type
@@ -221,6 +229,8 @@ subroutine fa_roots(capacity, model, alpha, mu, a_star, c_star, p_star, zone_cas
    integer(c_int), intent(out) :: zone_case(capacity)
    !> c* - a* of each state (accurate where the zone is very thin)
    real(c_double), intent(out) :: gap_width(capacity)
+   !> Mean gap gbar* of each state (NaN where not defined)
+   real(c_double), intent(out) :: gbar(capacity)
    !> Number of states (may exceed capacity)
    integer(c_int), intent(out) :: n_roots
    !> wa_ok or the failure's status
@@ -234,6 +244,7 @@ subroutine fa_roots(capacity, model, alpha, mu, a_star, c_star, p_star, zone_cas
 
    message = ""
    c_star = 0.0_c_double; p_star = 0.0_c_double; zone_case = 0; gap_width = 0.0_c_double
+   gbar = 0.0_c_double
    n = 0
    call new_params(alpha, mu, params, stat, message)
    if (stat == wa_ok) call model_roots(int(model), params, a_star, states, n, stat, message)
@@ -243,6 +254,9 @@ subroutine fa_roots(capacity, model, alpha, mu, a_star, c_star, p_star, zone_cas
          p_star(k) = states(k)%p_star
          zone_case(k) = int(states(k)%zone_case, c_int)
          gap_width(k) = states(k)%gap_width
+         gbar(k) = states(k)%gbar
+         if (.not. (states(k)%gbar >= 0.0_c_double .and. states(k)%gbar <= huge(1.0_c_double))) &
+            gbar(k) = ieee_value(gbar(k), ieee_quiet_nan)
       end do
    else
       n = 0
@@ -360,8 +374,9 @@ end subroutine fa_dimensional
 !> points, in the order of the curve; status 4 (capacity too small) when n_points >
 !> capacity (call again with capacity >= n_points). On other failures n_points = 0.
 subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b_star, &
-      zone_case, stable, event, extremum, n_points, status, message)
+      zone_case, stable, event, extremum, gbar, n_points, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_params, only: params_type, new_params
    use wa_models, only: check_model
@@ -391,6 +406,8 @@ subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b
    integer(c_int), intent(out) :: event(capacity)
    !> +1 local maximum of P* along the curve, -1 local minimum, 0 otherwise
    integer(c_int), intent(out) :: extremum(capacity)
+   !> Mean gap gbar* of each point (NaN where not defined)
+   real(c_double), intent(out) :: gbar(capacity)
    !> Number of points (may exceed capacity)
    integer(c_int), intent(out) :: n_points
    !> wa_ok or the failure's status
@@ -405,6 +422,7 @@ subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b
    message = ""
    a_star = 0.0_c_double; c_star = 0.0_c_double; p_star = 0.0_c_double
    b_star = 0.0_c_double; zone_case = 0; stable = 0; event = 0; extremum = 0
+   gbar = 0.0_c_double
    n_points = 0
    call check_model(int(model), stat, message)
    if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
@@ -419,6 +437,9 @@ subroutine fa_trace_branch(capacity, model, alpha, mu, a_star, c_star, p_star, b
       stable(1:m) = merge(1_c_int, 0_c_int, branch%stable(1:m))
       event(1:m) = int(branch%event(1:m), c_int)
       extremum(1:m) = int(branch%extremum(1:m), c_int)
+      gbar(1:m) = branch%gbar(1:m)
+      where (.not. (gbar(1:m) >= 0.0_c_double .and. gbar(1:m) <= huge(1.0_c_double))) &
+         gbar(1:m) = ieee_value(1.0_c_double, ieee_quiet_nan)
       n_points = int(branch%n, c_int)
       if (branch%n > capacity) then
          stat = wa_capacity_too_small
@@ -647,3 +668,73 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
    n_out = int(n, c_int)
    status = int(stat, c_int)
 end subroutine fa_adhesion_map
+!> Traction p/p* and gap h/Delta at n points x* of one state (wa_models::model_profile):
+!> the one at a* with c* nearest c_star (within 1e-6), or the principal state when
+!> principal /= 0; also the state (a*, c*, P*, zone case, gbar). On failure status /= 0,
+!> traction = gap = NaN.
+subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, traction, gap, &
+      state_c, state_p, state_zone, state_gbar, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_state, only: state_type
+   use wa_models, only: check_model, model_profile
+   implicit none
+   !> Number of points
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Contact half-width over the period, in [0, 1/2]
+   real(c_double), intent(in) :: a_star
+   !> Interaction-zone half-width of the state, in [0, 1/2] (ignored when principal /= 0)
+   real(c_double), intent(in) :: c_star
+   !> 1: the principal state at a*, 0: the state with c* nearest c_star
+   integer(c_int), intent(in) :: principal
+   !> The points x* (any finite values; period 1, crest at 0)
+   real(c_double), intent(in) :: x_star(n)
+   !> p/p* at each point
+   real(c_double), intent(out) :: traction(n)
+   !> h/Delta at each point
+   real(c_double), intent(out) :: gap(n)
+   !> c*, P*, zone case and gbar* of the state
+   real(c_double), intent(out) :: state_c, state_p, state_gbar
+   integer(c_int), intent(out) :: state_zone
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(state_type) :: state
+   integer :: stat
+
+   message = ""
+   state_c = ieee_value(1.0_c_double, ieee_quiet_nan)
+   state_p = state_c; state_gbar = state_c; state_zone = -1
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) then
+      if (principal /= 0) then
+         call model_profile(int(model), params, a_star, x_star, traction, gap, state, stat, &
+            message)
+      else
+         call model_profile(int(model), params, a_star, x_star, traction, gap, state, stat, &
+            message, c_star)
+      end if
+   end if
+   if (stat == wa_ok) then
+      state_c = state%c_star
+      state_p = state%p_star
+      state_zone = int(state%zone_case, c_int)
+      state_gbar = state%gbar
+   else
+      traction = ieee_value(1.0_c_double, ieee_quiet_nan)
+      gap = traction
+   end if
+   status = int(stat, c_int)
+end subroutine fa_profile

@@ -41,6 +41,8 @@ __all__ = [
     "trace_branch",
     "load_path",
     "critical_forces",
+    "Profile",
+    "profile",
 ]
 
 #: Model names and the library's integer constants (include/wavyadhesion.h).
@@ -268,11 +270,16 @@ class Equilibrium(NamedTuple):
         Load P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile).
     zone_case : numpy.ndarray of int
         1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact (a* = 1/2).
+    gbar : numpy.ndarray of float
+        Mean gap gbar* = gbar/Delta (mean of the gap h over one period): 0 in full
+        contact, 1 for the undeformed wave touching at its crest. NaN where a point
+        failed (errors="nan") or the mean gap is not defined (DW at a* = 0).
     """
 
     c_star: np.ndarray
     P_star: np.ndarray
     zone_case: np.ndarray
+    gbar: np.ndarray
 
 
 class State(NamedTuple):
@@ -290,6 +297,8 @@ class State(NamedTuple):
         1: a* < c* < 1/2, 2: c* = 1/2, 3: full contact.
     gap_width : float
         c* - a*, computed without cancellation (accurate for very thin zones).
+    gbar : float
+        Mean gap gbar* = gbar/Delta of the state (NaN where not defined).
     """
 
     a_star: float
@@ -297,6 +306,7 @@ class State(NamedTuple):
     P_star: float
     zone_case: int
     gap_width: float
+    gbar: float
 
 
 def westergaard_load(a):
@@ -402,7 +412,7 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
     Returns
     -------
     Equilibrium
-        Named tuple ``(c_star, P_star, zone_case)`` of arrays of the broadcast shape of
+        Named tuple ``(c_star, P_star, zone_case, gbar)`` of arrays of the broadcast shape of
         `alpha`, `mu` and `a` (numpy scalars when all three are scalars).
 
     Raises
@@ -426,22 +436,26 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
     )
     shape = a_b.shape
     if a_b.size == 0:
-        return Equilibrium(np.empty(shape), np.empty(shape), np.empty(shape, np.int32))
+        return Equilibrium(np.empty(shape), np.empty(shape), np.empty(shape, np.int32),
+                           np.empty(shape))
     alpha_f, mu_f, a_f = _flat(alpha_b), _flat(mu_b), _flat(a_b)
     if a_f.size <= _CHUNK_POINTS:
-        c, p, z, nfail, ifail, status, message = _f.fa_equilibrium(code, alpha_f, mu_f, a_f)
+        c, p, z, g, nfail, ifail, status, message = _f.fa_equilibrium(code, alpha_f, mu_f, a_f)
         if nfail and errors == "raise":
             _raise(status, message, _where(ifail, shape))
-        return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape))
+        return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape),
+                           _shaped(g, shape))
     c = np.empty(a_f.size)
     p = np.empty(a_f.size)
     z = np.empty(a_f.size, dtype=np.int32)
+    g = np.empty(a_f.size)
     for sl in _chunks(a_f.size, _CHUNK_POINTS):     # Ctrl-C is seen between chunks
-        c[sl], p[sl], z[sl], nfail, ifail, status, message = _f.fa_equilibrium(
+        c[sl], p[sl], z[sl], g[sl], nfail, ifail, status, message = _f.fa_equilibrium(
             code, alpha_f[sl], mu_f[sl], a_f[sl])
         if nfail and errors == "raise":
             _raise(status, message, _where(sl.start + ifail, shape))
-    return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape))
+    return Equilibrium(_shaped(c, shape), _shaped(p, shape), _shaped(z, shape),
+                       _shaped(g, shape))
 
 
 def roots(model, alpha, mu, a_star) -> list:
@@ -481,7 +495,7 @@ def roots(model, alpha, mu, a_star) -> list:
     alpha, mu, a_star = values
     capacity = _ROOTS_CAPACITY
     while True:
-        c, p, z, gap, n, status, message = _f.fa_roots(capacity, code, alpha, mu, a_star)
+        c, p, z, gap, g, n, status, message = _f.fa_roots(capacity, code, alpha, mu, a_star)
         if status == _CAPACITY_TOO_SMALL and n > capacity:
             capacity = int(n)
             continue
@@ -489,7 +503,8 @@ def roots(model, alpha, mu, a_star) -> list:
     if status != _OK:
         _raise(status, message)
     return [
-        State(a_star, float(c[k]), float(p[k]), int(z[k]), float(gap[k])) for k in range(n)
+        State(a_star, float(c[k]), float(p[k]), int(z[k]), float(gap[k]), float(g[k]))
+        for k in range(n)
     ]
 
 
@@ -542,6 +557,8 @@ class Branch:
         Event code of each point (:data:`EVENTS`; 0 for ordinary points).
     extremum : numpy.ndarray of int
         +1 at a local maximum of P* along the curve, -1 at a local minimum, else 0.
+    gbar : numpy.ndarray of float
+        Mean gap gbar* = gbar/Delta of each point.
     """
 
     model: str
@@ -555,6 +572,7 @@ class Branch:
     stable: np.ndarray
     event: np.ndarray
     extremum: np.ndarray
+    gbar: np.ndarray
 
     def __len__(self) -> int:
         return int(self.a_star.size)
@@ -727,8 +745,9 @@ def trace_branch(model, alpha, mu) -> Branch:
     Returns
     -------
     Branch
-        Arrays ``a_star, c_star, P_star, b_star, zone_case, stable, event, extremum``
-        (one element per point) and the list ``events`` (also ``folds``, ``switches``).
+        Arrays ``a_star, c_star, P_star, b_star, zone_case, stable, event, extremum,
+        gbar`` (one element per point) and the list ``events`` (also ``folds``,
+        ``switches``).
 
     Raises
     ------
@@ -751,7 +770,7 @@ def trace_branch(model, alpha, mu) -> Branch:
     capacity = _BRANCH_CAPACITY
     while True:
         out = _f.fa_trace_branch(capacity, code, alpha, mu)
-        a, c, p, b, z, st, ev, ex, n, status, message = out
+        a, c, p, b, z, st, ev, ex, g, n, status, message = out
         if status == _CAPACITY_TOO_SMALL and n > capacity:
             capacity = int(n)
             continue
@@ -761,7 +780,7 @@ def trace_branch(model, alpha, mu) -> Branch:
     n = int(n)
     return Branch(_model_name(code), alpha, mu, a[:n].copy(), c[:n].copy(), p[:n].copy(),
                   b[:n].copy(), z[:n].copy(), st[:n].astype(bool), ev[:n].copy(),
-                  ex[:n].copy())
+                  ex[:n].copy(), g[:n].copy())
 
 
 def load_path(model, alpha, mu) -> LoadPath:
@@ -998,6 +1017,107 @@ def _sweep_chunk(code, alpha, mu_f, idx, out, messages, errors, shape, result=No
         if errors == "raise":
             _raise(int(rs[j]), text, f"{where + ', ' if where else ''}alpha = {alpha!r}, "
                    f"mu = {float(mu_f[i])!r}")
+
+
+class Profile(NamedTuple):
+    """Traction and gap profiles of one state (:func:`profile`); unpacks as
+    ``x, traction, gap``.
+
+    Attributes
+    ----------
+    x : numpy.ndarray of float
+        The points x* = x/L (period 1, crest at x* = 0).
+    traction : numpy.ndarray of float
+        p(x)/p* (positive = compressive; its mean over a period is P*). JKR: -inf exactly
+        at the contact edges |x*| = a*.
+    gap : numpy.ndarray of float
+        h(x)/Delta >= 0 (0 on the contact; its mean over a period is gbar*).
+    """
+
+    x: np.ndarray
+    traction: np.ndarray
+    gap: np.ndarray
+
+
+#: Points of profile()'s default grid of x* over [-1/2, 1/2].
+_PROFILE_POINTS = 401
+
+
+def profile(model, alpha, mu, a_star, c_star=None, x=None) -> Profile:
+    """Traction p(x)/p* and gap h(x)/Delta of one equilibrium state.
+
+    The state is the one at `a_star` whose c* is nearest `c_star` among :func:`roots`
+    (it must lie within 1e-6 of `c_star`), or the principal state (:func:`equilibrium`)
+    when `c_star` is None. "md" at a* = 0: the state without contact whose Dugdale zone
+    |x*| < c_star pulls the crest region (c_star < 1/2 required).
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha : float
+        Johnson's parameter, alpha > 0.
+    mu : float
+        Transition parameter, mu >= 0.
+    a_star : float
+        Contact half-width over the period, in [0, 1/2].
+    c_star : float, optional
+        Interaction-zone half-width of the state, in [0, 1/2] (Westergaard, JKR:
+        c* = a*). Default: the principal state.
+    x : array_like, optional
+        Points x* = x/L, any finite values (period 1, crest at 0). Default: 401 points
+        from -1/2 to 1/2.
+
+    Returns
+    -------
+    Profile
+        ``(x, traction, gap)``, arrays of the shape of `x`.
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model, an argument outside its range, x not finite, or c_star None for
+        "md" at a* = 0.
+    InvalidTypeError
+        An argument that is not a real number (None, complex, a string).
+    NoSolutionError
+        No state at `a_star` has that c*, "dw" at a* = 0, "jkr" at a* = 1/2, or "md" at
+        a* = 0 with no state without contact at `c_star`.
+    ConvergenceError
+        The solver failed.
+
+    Examples
+    --------
+    >>> x, t, h = profile("dw", 0.3, 1.0, 0.2)
+    >>> bool(h.min() >= 0 and h[200] == 0)
+    True
+    """
+    code = _model_code(model)
+    alpha = _scalar(alpha, "alpha")
+    mu = _scalar(mu, "mu")
+    a_star = _scalar(a_star, "a_star")
+    principal = c_star is None
+    c_value = 0.0 if principal else _scalar(c_star, "c_star")
+    if x is None:
+        x = np.linspace(-0.5, 0.5, _PROFILE_POINTS)
+    x = _float_array(x, "x")
+    shape = x.shape
+    x_f = _flat(x)
+    bad = np.flatnonzero(~np.isfinite(x_f))
+    if bad.size:
+        where = _where(int(bad[0]) + 1, shape)
+        raise InvalidArgumentError(
+            f"x: every value must be finite (any finite x* is valid: the period is 1); got "
+            f"{x_f[bad[0]]!r}{' ' + where if where else ''}", _INVALID_ARGUMENT)
+    t = np.empty(x_f.size)
+    h = np.empty(x_f.size)
+    chunks = list(_chunks(x_f.size, _CHUNK_POINTS)) or [slice(0, 0)]
+    for sl in chunks:                                 # Ctrl-C is seen between chunks
+        out = _f.fa_profile(code, alpha, mu, a_star, c_value, int(principal), x_f[sl])
+        t[sl], h[sl], _, _, _, _, status, message = out
+        if status != _OK:
+            _raise(status, message)
+    return Profile(x_f.reshape(shape).copy(), t.reshape(shape), h.reshape(shape))
 
 
 @dataclass(frozen=True)

@@ -865,6 +865,207 @@ static void test_adhesion_map(void) {
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL alpha refused");
    st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, NULL);
    CHECK(st == WA_INVALID_ARGUMENT, "adhesion_map NULL n_out refused");
+/* ---------------------------------------------------------------- separation */
+
+/* Mean over one period of f sampled at n midpoints of [-1/2, 1/2]. */
+static double period_mean(const double *f, int n) {
+   double s = 0.0;
+   int i;
+   for (i = 0; i < n; i++) s += f[i];
+   return s / n;
+}
+
+/* wa_equilibrium_gap, wa_roots_gap and wa_trace_branch_gap agree with the plain functions
+   and with the closed forms (Westergaard: 1 - A^2 + A^2 ln A^2; JKR: 1 - A^2 + P* ln A^2). */
+static void test_gap_functions(void) {
+   double c, p, g, c0, p0, cs[8], ps[8], gs[8];
+   int z, z0, zs[8], n, m, k, st;
+   char msg[256];
+   for (m = 0; m < 4; m++) {
+      double a;
+      for (a = 0.05; a < 0.5; a += 0.1) {
+         st = wa_equilibrium_gap(models[m], 0.3, 1.0, a, &c, &p, &z, &g);
+         wa_equilibrium(models[m], 0.3, 1.0, a, &c0, &p0, &z0);
+         CHECK(st == WA_OK && c == c0 && p == p0 && z == z0 && isfinite(g) && g >= 0,
+               "equilibrium_gap model %d a* %g: status %d gbar %g", m, a, st, g);
+         st = wa_roots_gap(models[m], 0.3, 1.0, a, 8, cs, ps, zs, gs, &n);
+         CHECK(st == WA_OK && n >= 1 && close_to(cs[0], c, 1e-12) && close_to(gs[0], g, 1e-12),
+               "roots_gap model %d a* %g: status %d n %d gbar %.17g vs %.17g", m, a, st, n, gs[0], g);
+         for (k = 0; k < n && st == WA_OK; k++)
+            CHECK(isfinite(gs[k]) && gs[k] >= 0, "roots_gap model %d root %d gbar %g", m, k,
+                  gs[k]);
+         if (m == 0) {
+            double s2 = sin(pi * a) * sin(pi * a);
+            CHECK(close_to(g, 1 - s2 + s2 * log(s2), 1e-14), "westergaard gbar(%g) = %.17g", a,
+                  g);
+         } else if (m == 1) {
+            double s2 = sin(pi * a) * sin(pi * a);
+            CHECK(close_to(g, 1 - s2 + p * log(s2), 1e-13), "jkr gbar(%g) = %.17g", a, g);
+         }
+      }
+      st = wa_equilibrium_gap(models[m], 0.3, 1.0, 0.5, &c, &p, &z, &g);
+      CHECK(st == WA_OK && g == 0.0, "full contact: gbar %g (status %d)", g, st);
+   }
+   /* failure outputs and NULL */
+   c = p = g = 1.0;
+   z = 7;
+   st = wa_equilibrium_gap_msg(WA_MODEL_DW, 0.3, 1.0, 0.7, &c, &p, &z, &g, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && isnan(c) && isnan(p) && isnan(g) && z == 0 &&
+            strstr(msg, "a_star"), "equilibrium_gap a* 0.7: %d '%s'", st, msg);
+   c = p = 1.0;
+   st = wa_equilibrium_gap_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, &c, &p, &z, NULL, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && isnan(c) && isnan(p) && strstr(msg, "gbar"),
+         "equilibrium_gap gbar NULL: %d '%s'", st, msg);
+   n = 5;
+   st = wa_roots_gap_msg(WA_MODEL_MD, 0.3, 1.0, 0.2, 8, cs, ps, zs, NULL, &n, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0 && strstr(msg, "gbar"), "roots_gap gbar NULL: %d",
+         st);
+   st = wa_roots_gap(WA_MODEL_MD, 0.3, 1.0, 0.2, 0, NULL, NULL, NULL, NULL, &n);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n >= 1, "roots_gap capacity 0: %d n %d", st, n);
+   /* DW at a* = 0: no contact, no mean gap */
+   st = wa_equilibrium_gap_msg(WA_MODEL_DW, 0.3, 1.0, 0.0, &c, &p, &z, &g, msg, sizeof msg);
+   CHECK((st == WA_OK && isfinite(g) && g >= 0) || (st == WA_NO_SOLUTION && isnan(g)),
+         "dw a* = 0: status %d gbar %g '%s'", st, g, msg);
+   {
+      enum { CAP = 4000 };
+      static double a1[CAP], c1[CAP], p1[CAP], g1[CAP], a2[CAP], c2[CAP], p2[CAP];
+      static int z1[CAP], s1[CAP], e1[CAP], z2[CAP], s2[CAP], e2[CAP];
+      int n1, n2, same = 1, ok = 1;
+      for (m = 0; m < 4; m++) {
+         int st1 = wa_trace_branch_gap(models[m], 0.3, 1.0, CAP, a1, c1, p1, z1, s1, e1, g1,
+                                       &n1);
+         int st2 = wa_trace_branch(models[m], 0.3, 1.0, CAP, a2, c2, p2, z2, s2, e2, &n2);
+         CHECK(st1 == WA_OK && st2 == WA_OK && n1 == n2, "branch_gap model %d: %d %d n %d %d",
+               m, st1, st2, n1, n2);
+         for (k = 0; k < n1 && k < n2; k++) {
+            same = same && a1[k] == a2[k] && c1[k] == c2[k] && p1[k] == p2[k] &&
+                   e1[k] == e2[k];
+            ok = ok && isfinite(g1[k]) && g1[k] >= 0 && g1[k] <= 1.5;
+         }
+         CHECK(same && ok, "branch_gap model %d: same points %d, gbar in [0, 1.5] %d", m, same,
+               ok);
+         CHECK(g1[n1 - 1] < 1e-6, "branch_gap model %d: gbar at the end %g", m, g1[n1 - 1]);
+         /* the mean gap of each point is its state's: check a few against roots_gap */
+         for (k = 1; k < n1 - 1; k += n1 / 7) {
+            int j, nr, found = 0;
+            if (z1[k] == WA_ZONE_FULL_CONTACT) continue;
+            if (wa_roots_gap(models[m], 0.3, 1.0, a1[k], 8, cs, ps, zs, gs, &nr) != WA_OK)
+               continue;
+            for (j = 0; j < nr; j++)
+               if (fabs(cs[j] - c1[k]) < 1e-7 && close_to(gs[j], g1[k], 1e-6)) found = 1;
+            CHECK(found, "branch_gap model %d point %d: a* %.17g c* %.17g gbar %.17g not among "
+                  "roots", m, k, a1[k], c1[k], g1[k]);
+         }
+      }
+      st = wa_trace_branch_gap_msg(WA_MODEL_DW, 0.3, 1.0, 8, a1, c1, p1, z1, s1, e1, NULL, &n1,
+                                   msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && n1 == 0 && strstr(msg, "gbar"),
+            "branch_gap gbar NULL: %d '%s'", st, msg);
+      st = wa_trace_branch_gap(WA_MODEL_DW, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, NULL,
+                               NULL, &n1);
+      CHECK(st == WA_CAPACITY_TOO_SMALL && n1 > 2, "branch_gap capacity 0: %d n %d", st, n1);
+   }
+}
+
+/* wa_profile: identities (traction mean = P*, gap = 0 on the contact and >= 0, gap mean =
+   gbar, MD h(c) = 2 Dcod), values of test/data/separation_*.txt, and the refusals. */
+static void test_profile(void) {
+   enum { N = 20000 };
+   static double x[N], t[N], h[N];
+   double cs[8], ps[8], gs[8], c, p, g;
+   int zs[8], z, n, m, k, i, st;
+   char msg[256];
+   for (i = 0; i < N; i++) x[i] = -0.5 + (i + 0.5) / N;
+   for (m = 0; m < 4; m++) {
+      double a;
+      for (a = 0.1; a < 0.45; a += 0.1) {
+         st = wa_roots_gap(models[m], 0.3, 1.0, a, 8, cs, ps, zs, gs, &n);
+         for (k = 0; k < n && st == WA_OK; k++) {
+            int ok = 1, on_contact = 1;
+            int sp = wa_profile(models[m], 0.3, 1.0, a, cs[k], N, x, t, h);
+            CHECK(sp == WA_OK, "profile model %d a* %g root %d: status %d", m, a, k, sp);
+            if (sp != WA_OK) continue;
+            for (i = 0; i < N; i++) {
+               ok = ok && isfinite(t[i]) && isfinite(h[i]) && h[i] >= 0;
+               if (fabs(x[i]) < a) on_contact = on_contact && h[i] == 0.0;
+            }
+            CHECK(ok && on_contact, "profile model %d a* %g root %d: finite %d, h = 0 on the "
+                  "contact %d", m, a, k, ok, on_contact);
+            /* midpoint rule: the square-root edges limit it to ~1e-4 (JKR ~1e-2) */
+            CHECK(fabs(period_mean(t, N) - ps[k]) < (m == 1 ? 2e-2 : 1e-3),
+                  "profile model %d a* %g root %d: mean traction %.9g vs P* %.9g", m, a, k,
+                  period_mean(t, N), ps[k]);
+            CHECK(fabs(period_mean(h, N) - gs[k]) < 1e-6,
+                  "profile model %d a* %g root %d: mean gap %.12g vs gbar %.12g", m, a, k,
+                  period_mean(h, N), gs[k]);
+            if (m == WA_MODEL_MD && zs[k] == WA_ZONE_INSIDE) {
+               double dcod = cbrt(pow(0.3, 4) / 2) / 1.0, xc = cs[k], hc;
+               wa_profile(models[m], 0.3, 1.0, a, cs[k], 1, &xc, t, &hc);
+               CHECK(close_to(hc, 2 * dcod, 1e-10), "md h(c*) %.17g vs 2 Dcod %.17g", hc,
+                     2 * dcod);
+            }
+         }
+      }
+   }
+   /* values of tools/make_separation_reference.py (test/data/separation_*.txt rows) */
+   {
+      double xs = 0.36, tt, hh;
+      st = wa_profile(WA_MODEL_MD, 0.01, 0.001, 0.3, 0.5, 1, &xs, &tt, &hh);
+      CHECK(st == WA_OK && close_to(tt, -4.5930363226678917957e-5, 1e-12) &&
+               close_to(hh, 0.1023641757601853788, 1e-12),
+            "md reference row: status %d traction %.17g gap %.17g", st, tt, hh);
+   }
+   /* MD without contact (a* = 0): a Dugdale zone around the crest */
+   {
+      double xs[3] = {0.0, 0.05, 0.3}, tt[3], hh[3], dcod = cbrt(pow(0.3, 4) / 2);
+      st = wa_profile(WA_MODEL_MD, 0.3, 1.0, 0.0, 0.05, 3, xs, tt, hh);
+      CHECK(st == WA_OK && tt[0] < 0 && tt[2] == 0 && close_to(hh[1], 2 * dcod, 1e-12) &&
+               hh[0] > 0 && hh[0] < hh[1] && hh[2] > hh[1],
+            "md no contact: status %d traction %g %g gap %g %g %g", st, tt[0], tt[2], hh[0],
+            hh[1], hh[2]);
+      st = wa_profile_msg(WA_MODEL_MD, 0.3, 1.0, 0.0, 0.5, 3, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_NO_SOLUTION && isnan(tt[0]) && isnan(hh[2]) && strstr(msg, "c_star"),
+            "md a* = 0, c* = 1/2: %d '%s'", st, msg);
+   }
+   /* refusals: no state with that c*, bad arguments; NaN in every output element */
+   {
+      double xs[2] = {0.1, 0.2}, tt[2], hh[2];
+      wa_equilibrium_gap(WA_MODEL_DW, 0.3, 1.0, 0.2, &c, &p, &z, &g);
+      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c + 1e-7, 2, xs, tt, hh);
+      CHECK(st == WA_OK, "profile within 1e-6 of c*: status %d", st);
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c + 1e-3, 2, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_NO_SOLUTION && isnan(tt[0]) && isnan(tt[1]) && isnan(hh[0]) &&
+               isnan(hh[1]) && strstr(msg, "nearest"),
+            "profile c* off by 1e-3: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0.2, 0.3, 2, xs, tt, hh, msg,
+                          sizeof msg);
+      CHECK(st == WA_NO_SOLUTION, "westergaard c* != a*: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_JKR, 0.3, 1.0, 0.5, 0.5, 2, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_NO_SOLUTION && strstr(msg, "jkr"), "jkr full contact: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.0, 0.1, 2, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_NO_SOLUTION && strstr(msg, "dw"), "dw a* = 0: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, 0.7, 2, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "c_star"), "c* 0.7: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c, -1, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n ="), "n = -1: %d '%s'", st, msg);
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 2, NULL, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && isnan(tt[1]) && strstr(msg, "x_star"),
+            "x_star NULL: %d '%s'", st, msg);
+      xs[1] = NAN;
+      st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 2, xs, tt, hh, msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "x_star[1]"), "x NaN: %d '%s'", st, msg);
+      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 0, NULL, NULL, NULL);
+      CHECK(st == WA_OK, "n = 0 identifies the state: %d", st);
+      st = wa_profile_msg(7, 0.3, 1.0, 0.2, c, 0, NULL, NULL, NULL, msg, sizeof msg);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "model"), "model 7: %d '%s'", st, msg);
+   }
+   /* JKR: -Infinity exactly at the contact edge, finite elsewhere */
+   {
+      double xs[3] = {0.2, -0.2, 0.1}, tt[3], hh[3];
+      st = wa_profile(WA_MODEL_JKR, 0.3, 1.0, 0.2, 0.2, 3, xs, tt, hh);
+      CHECK(st == WA_OK && tt[0] == -INFINITY && tt[1] == -INFINITY && isfinite(tt[2]) &&
+               hh[0] == 0, "jkr edge: %d %g %g %g", st, tt[0], tt[1], tt[2]);
+   }
 }
 
 int main(void) {
@@ -891,6 +1092,8 @@ int main(void) {
    test_sweep_keeps_rows();
    test_branch_threads();
    test_adhesion_map();
+   test_gap_functions();
+   test_profile();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

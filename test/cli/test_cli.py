@@ -43,7 +43,7 @@ def test_point_csv_columns(cli, model):
     res = run(cli, "point", "--model", model, "--alpha", "0.3", "--mu", "1",
               "--a-star", "0.1,0.2", "--format", "csv")
     table = rows(res.stdout)
-    assert list(table[0].keys()) == ["a_star", "c_star", "P_star", "zone_case"]
+    assert list(table[0].keys()) == ["a_star", "c_star", "P_star", "zone_case", "gbar"]
     assert {float(r["a_star"]) for r in table} == {0.1, 0.2}
     for r in table:
         assert math.isfinite(float(r["P_star"]))
@@ -56,18 +56,18 @@ def test_table_format_is_numeric_after_comments(cli):
     comments = [l for l in lines if l.startswith("#")]
     assert any("alpha" in l and "mu" in l for l in comments)
     assert any("Sigma0" in l and "Dcod" in l for l in comments)
-    assert any(l.startswith("# columns: a_star c_star P_star zone_case") for l in comments)
+    assert any(l.startswith("# columns: a_star c_star P_star zone_case gbar") for l in comments)
     data = [l for l in lines if not l.startswith("#")]
     assert len(data) == 2
     for l in data:
         values = [float(x) for x in l.split()]
-        assert len(values) == 4
+        assert len(values) == 5
 
 
 def test_default_is_dw_branch(cli):
     res = run(cli)
     assert "# model: dw" in res.stdout
-    assert "a_star c_star P_star b_star zone_case stable event" in res.stdout
+    assert "# columns: a_star c_star P_star b_star zone_case stable event gbar\n" in res.stdout
     data = [l.split() for l in res.stdout.splitlines() if not l.startswith("#")]
     events = {int(r[6]) for r in data}
     assert {1, 2, 8} <= events
@@ -435,3 +435,74 @@ def test_map_csv_and_usage_errors(cli):
         bad = run(cli, *args, check=False)
         assert bad.returncode == 2 and bad.stdout == "", args
         assert "wavyadhesion:" in bad.stderr
+
+
+# --- separation: profile subcommand, gbar columns ----------------------------------------
+
+@pytest.mark.parametrize("model", ["dw", "md"])
+def test_branch_has_gbar_last(cli, model):
+    res = run(cli, "branch", "--model", model, "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys())[-2:] == ["event", "gbar"]
+    g = [float(r["gbar"]) for r in table]
+    assert all(math.isfinite(v) and v >= 0 for v in g) and g[-1] < 1e-6
+
+
+def test_point_gbar_matches_python_closed_form(cli):
+    res = run(cli, "point", "--model", "westergaard", "--a-star", "0.1,0.3", "--format", "csv")
+    for r in rows(res.stdout):
+        s2 = math.sin(math.pi * float(r["a_star"])) ** 2
+        assert float(r["gbar"]) == pytest.approx(1 - s2 + s2 * math.log(s2), rel=1e-14)
+
+
+def test_profile_md(cli):
+    res = run(cli, "profile", "--model", "md", "--alpha", "0.3", "--mu", "1", "--a-star", "0.2")
+    lines = res.stdout.splitlines()
+    comments = "\n".join(l for l in lines if l.startswith("#"))
+    assert "# columns: x_star traction gap" in comments
+    for needle in ("# state: the principal state", "a_star = 2.0000000000000001E-001", "c_star = ",
+                   "P_star = ", "zone_case = 1",
+                   "gbar = "):
+        assert needle in comments
+    data = [[float(v) for v in l.split()] for l in lines if not l.startswith("#")]
+    assert len(data) == 201 and data[0][0] == -0.5 and data[-1][0] == 0.5
+    assert all(h >= 0 for _, _, h in data)
+    assert all(h == 0 for x, _, h in data if abs(x) < 0.2)
+    gbar = float(comments.split("gbar = ")[1].split()[0])
+    mean = sum(h for _, _, h in data[:-1]) / 200             # one period, trapezoid = left sum
+    assert mean == pytest.approx(gbar, abs=1e-4)
+
+
+def test_profile_options(cli):
+    res = run(cli, "profile", "--model", "md", "--a-star", "0", "--c-star", "0.05", "--n", "5",
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == ["x_star", "traction", "gap"] and len(table) == 5
+    assert float(table[2]["traction"]) < 0 and float(table[0]["traction"]) == 0
+    point = rows(run(cli, "point", "--model", "dw", "--a-star", "0.2", "--format", "csv").stdout)
+    c = point[0]["c_star"]
+    a = run(cli, "profile", "--model", "dw", "--a-star", "0.2", "--c-star", c).stdout
+    b = run(cli, "profile", "--model", "dw", "--a-star", "0.2").stdout
+    va = [float(v) for l in a.splitlines() if not l.startswith("#") for v in l.split()]
+    vb = [float(v) for l in b.splitlines() if not l.startswith("#") for v in l.split()]
+    assert va == pytest.approx(vb, rel=1e-10, abs=1e-14)    # roots vs principal: ulps
+
+
+@pytest.mark.parametrize("args, code, needle", [
+    (["profile"], 2, "--a-star"),
+    (["profile", "--a-star", "0.1,0.2"], 2, "one value"),
+    (["profile", "--a-star", "0.7"], 2, "[0, 1/2]"),
+    (["profile", "--a-star", "0.2", "--c-star", "0.9"], 2, "c_star"),
+    (["profile", "--a-star", "0.2", "--n", "1"], 2, "--n"),
+    (["profile", "--a-star", "0.2", "--n", "x"], 2, "--n"),
+    (["point", "--a-star", "0.2", "--n", "5"], 2, "--n are only for the profile"),
+    (["branch", "--c-star", "0.2"], 2, "--c-star"),
+    (["profile", "--model", "md", "--a-star", "0"], 2, "c_star"),
+    (["profile", "--a-star", "0.2", "--c-star", "0.45"], 1, "nearest"),
+    (["profile", "--model", "jkr", "--a-star", "0.5"], 1, "jkr"),
+])
+def test_profile_errors(cli, args, code, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == code, res.stderr
+    assert needle in res.stderr
+    assert res.stdout == ""

@@ -58,17 +58,18 @@ const char *wa_version(void);
 
 enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
-   F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION, N_FAMILY
+   F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION,
+   F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, N_FAMILY
 };
 /* Function ids: a family and whether the _msg variant is called. */
 #define N_FN (2 * N_FAMILY)
 static const char *family_name[N_FAMILY] = {
    "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
-   "wa_version"};
-static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0};
+   "wa_version", "wa_equilibrium_gap", "wa_roots_gap", "wa_trace_branch_gap", "wa_profile"};
+static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md). */
-static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1};
+static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1, 24, 20, 1, 12};
 
 /* ----------------------------------------------------------- violation kinds */
 
@@ -248,13 +249,16 @@ typedef struct {
    unsigned null_mask; /* bit k: pointer argument k is NULL */
    int n_mu;
    double mus[8];
+   double cs;       /* wa_profile: c* (unless `pick` >= 0: a root of wa_roots_gap) */
+   int pick, x_bad; /* wa_profile: root index to take c* from; an x* not finite */
    char repro[1024];
 } call_t;
 
 /* Output buffers with guards (static: BIG elements each, only touched pages count). */
-static double dbuf[3][GUARD + BIG + GUARD];
+#define N_DBUF 4 /* wa_trace_branch_gap: a*, c*, P*, gbar */
+static double dbuf[N_DBUF][GUARD + BIG + GUARD];
 static int ibuf[3][GUARD + BIG + GUARD];
-static double dscalar[2][1 + 2 * GUARD];
+static double dscalar[3][1 + 2 * GUARD];
 static int iscalar[2][1 + 2 * GUARD];
 static unsigned char mbuf[MSG_REAL];
 static const uint64_t D_SENT = 0x7FF8DEAD0000BEEFULL; /* a NaN nobody else writes */
@@ -269,16 +273,14 @@ static void fill_buffers(int n) {
    int k, i;
    if (n < 0) n = 0;
    if (n > FILL) n = FILL;
+   for (k = 0; k < N_DBUF; k++)
+      for (i = 0; i < n + 2 * GUARD; i++) dbuf[k][i] = d_sent();
    for (k = 0; k < 3; k++)
-      for (i = 0; i < n + 2 * GUARD; i++) {
-         dbuf[k][i] = d_sent();
-         ibuf[k][i] = I_SENT;
-      }
+      for (i = 0; i < n + 2 * GUARD; i++) ibuf[k][i] = I_SENT;
+   for (k = 0; k < 3; k++)
+      for (i = 0; i < 1 + 2 * GUARD; i++) dscalar[k][i] = d_sent();
    for (k = 0; k < 2; k++)
-      for (i = 0; i < 1 + 2 * GUARD; i++) {
-         dscalar[k][i] = d_sent();
-         iscalar[k][i] = I_SENT;
-      }
+      for (i = 0; i < 1 + 2 * GUARD; i++) iscalar[k][i] = I_SENT;
    memset(mbuf, M_SENT, sizeof mbuf);
 }
 
@@ -386,6 +388,35 @@ static void make_repro(call_t *c) {
               ptr_name(c, 3, "c"), ptr_name(c, 4, "P"), ptr_name(c, 5, "&n"),
               ptr_name(c, 6, "&P_fc"), ptr_name(c, 7, "&P_pf"), msgpart);
       break;
+   case F_EQUILIBRIUM_GAP:
+      sprintf(c->repro, "wa_equilibrium_gap%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+              cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ptr_name(c, 0, "&c"),
+              ptr_name(c, 1, "&P"), ptr_name(c, 2, "&z"), ptr_name(c, 3, "&g"), msgpart);
+      break;
+   case F_ROOTS_GAP:
+      sprintf(c->repro, "wa_roots_gap%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+              c->model, cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ci(cap, c->capacity),
+              ptr_name(c, 0, "c"), ptr_name(c, 1, "P"), ptr_name(c, 2, "z"),
+              ptr_name(c, 4, "g"), ptr_name(c, 3, "&n"), msgpart);
+      break;
+   case F_TRACE_BRANCH_GAP:
+      sprintf(c->repro, "wa_trace_branch_gap%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+              sfx, c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
+              ptr_name(c, 0, "a"), ptr_name(c, 1, "c"), ptr_name(c, 2, "P"),
+              ptr_name(c, 3, "z"), ptr_name(c, 4, "s"), ptr_name(c, 5, "e"),
+              ptr_name(c, 7, "g"), ptr_name(c, 6, "&n"), msgpart);
+      break;
+   case F_PROFILE: {
+      char cs[80];
+      if (c->pick >= 0)
+         sprintf(cs, "c* of root %d of wa_roots (else %s)", c->pick, cd(a3, c->cs));
+      else
+         cd(cs, c->cs);
+      sprintf(c->repro, "wa_profile%s(%d, %s, %s, %s, %s, %s, %s, %s, %s%s) [x*: make_x]", sfx,
+              c->model, cd(a1, c->alpha), cd(a2, c->mu), cd(mu, c->a), cs, ci(cap, c->capacity),
+              ptr_name(c, 0, "x"), ptr_name(c, 1, "t"), ptr_name(c, 2, "h"), msgpart);
+      break;
+   }
    case F_CRITICAL_SWEEP:
       if (c->n_mu > 0 && !(c->null_mask & 1u)) {
          strcpy(mu, "(double[]){");
@@ -427,7 +458,8 @@ static void gen_call(long index, call_t *c) {
    c->msg = has_msg[k] && unif(&r) < 0.5;
    valid = unif(&r) < 0.5; /* half the calls: every argument valid, pointers too */
    c->model = valid ? below(&r, 4) : gen_model(&r);
-   if (k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP && unif(&r) < 0.5) {
+   if (((k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP) || k == F_TRACE_BRANCH_GAP) &&
+       unif(&r) < 0.5) {
       /* the slow functions: typical parameters more often */
       c->alpha = log_unif(&r, 1e-2, 10.0);
       c->mu = unif(&r) < 0.05 ? 0.0 : log_unif(&r, 1e-2, 30.0);
@@ -460,7 +492,37 @@ static void gen_call(long index, call_t *c) {
          c->mus[u] = unif(&r) < 0.7 || valid ? log_unif(&r, 1e-2, 30.0)
                                              : gen_param(&r, 1e-3, 1e3, 1);
    }
+   if (k == F_PROFILE) {
+      static const int nn[] = {0, 1, 2, 3, 5, 8, 17, 64, 256, -1, INT_MIN};
+      u2 = unif(&r);
+      c->capacity = u2 < 0.9 ? nn[below(&r, 9)] : nn[9 + below(&r, 2)];
+      if (valid && c->capacity < 0) c->capacity = 8;
+      c->pick = unif(&r) < (valid ? 0.8 : 0.3) ? below(&r, 4) : -1;
+      u2 = unif(&r);
+      c->cs = c->pick >= 0 || u2 < 0.4 ? 0.5 * unif(&r) : u2 < 0.5 ? c->a : u2 < 0.6 ? 0.11 * unif(&r)
+            : u2 < 0.9 || valid ? 0.5 * unif(&r) : special(&r);
+      c->x_bad = !valid && unif(&r) < 0.15;
+   }
    make_repro(c);
+}
+
+/* The x* of a wa_profile call (deterministic from the call): mostly in [-1/2, 1/2], the
+   contact and zone edges, far periods, and (x_bad) one NaN or infinity. */
+static void make_x(const call_t *c, double cs, double *x, int n) {
+   rng_t r;
+   int i;
+   r.s = opt_seed ^ ((uint64_t)c->index * 0xBF58476D1CE4E5B9ULL) ^ 0x5851F42D4C957F2DULL;
+   for (i = 0; i < n; i++) {
+      double u = unif(&r), sg = unif(&r) < 0.5 ? -1.0 : 1.0;
+      if (u < 0.6) x[i] = unif(&r) - 0.5;
+      else if (u < 0.7) x[i] = sg * c->a;
+      else if (u < 0.8) x[i] = sg * cs;
+      else if (u < 0.85) x[i] = sg * 0.5;
+      else if (u < 0.9) x[i] = sg * nextafter(c->a, unif(&r) < 0.5 ? 0 : 1);
+      else if (u < 0.95) x[i] = sg * (below(&r, 1000000) + unif(&r));
+      else x[i] = sg * log_unif(&r, DBL_TRUE_MIN, 1e-3);
+   }
+   if (c->x_bad && n > 0) x[below(&r, n)] = unif(&r) < 0.5 ? NAN : -INFINITY;
 }
 
 /* ----------------------------------------------------------------- checks */
@@ -488,10 +550,10 @@ static void check_guards(const call_t *c, int n_d, int n_i, int filled) {
             violation(c, K_OVERRUN, "int array %d written outside [0, %d)", k, filled);
             break;
          }
-   for (k = 0; k < 2; k++)
+   for (k = 0; k < 3; k++)
       for (i = 0; i < GUARD; i++)
          if (!is_dsent(dscalar[k][i]) || !is_dsent(dscalar[k][GUARD + 1 + i]) ||
-             iscalar[k][i] != I_SENT || iscalar[k][GUARD + 1 + i] != I_SENT) {
+             (k < 2 && (iscalar[k][i] != I_SENT || iscalar[k][GUARD + 1 + i] != I_SENT))) {
             violation(c, K_OVERRUN, "scalar %d: a neighbour was written", k);
             break;
          }
@@ -593,10 +655,8 @@ static uint64_t digest(int st, int used) {
    int k;
    if (used < 0) used = 0;
    if (used > FILL) used = FILL;
-   for (k = 0; k < 3; k++) {
-      h = fnv(h, D(k), used * sizeof(double));
-      h = fnv(h, I(k), used * sizeof(int));
-   }
+   for (k = 0; k < N_DBUF; k++) h = fnv(h, D(k), used * sizeof(double));
+   for (k = 0; k < 3; k++) h = fnv(h, I(k), used * sizeof(int));
    h = fnv(h, dscalar, sizeof dscalar);
    h = fnv(h, iscalar, sizeof iscalar);
    return h;
@@ -621,6 +681,13 @@ static void lib_call(void) { shm->lib_calls++; }
 /* wa_equilibrium[_msg] */
 static int do_equilibrium(const call_t *c, double a, int msg) {
    lib_call();
+   if (c->family == F_EQUILIBRIUM_GAP || c->family == F_ROOTS_GAP) {
+      if (msg)
+         return wa_equilibrium_gap_msg(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
+                                       P(2, IS(0)), P(3, DS(2)), MSG(c), c->msgcap);
+      return wa_equilibrium_gap(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
+                                P(2, IS(0)), P(3, DS(2)));
+   }
    if (msg)
       return wa_equilibrium_msg(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
                                 P(2, IS(0)), MSG(c), c->msgcap);
@@ -636,9 +703,14 @@ static int run_equilibrium(const call_t *c, int msg) {
 }
 
 static void check_equilibrium(const call_t *c, int st, int invalid) {
-   double cs = *DS(0), p = *DS(1);
+   double cs = *DS(0), p = *DS(1), g = *DS(2);
    int z = *IS(0);
    check_status(c, st, 0x2F, invalid); /* 0, 1, 2, 3, 5 */
+   if (c->family == F_EQUILIBRIUM_GAP && !(c->null_mask & 8u)) {
+      if (st == WA_OK && !(c->null_mask & 7u) && !(isfinite(g) && g >= 0))
+         violation(c, K_NONFINITE, "gbar %.17g", g);
+      if (st != WA_OK && !isnan(g)) violation(c, K_FAIL_OUTPUT, "status %d: gbar %.17g", st, g);
+   }
    if (st == WA_OK) {
       if (c->null_mask & 7u) return;
       if (!isfinite(cs) || isnan(p) ||
@@ -659,6 +731,14 @@ static void check_equilibrium(const call_t *c, int st, int invalid) {
 static int run_roots(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
+   if (c->family == F_ROOTS_GAP) {
+      if (msg)
+         return wa_roots_gap_msg(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)),
+                                 P(1, D(1)), P(2, I(0)), P(4, D(2)), P(3, IS(0)), MSG(c),
+                                 c->msgcap);
+      return wa_roots_gap(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)), P(1, D(1)),
+                          P(2, I(0)), P(4, D(2)), P(3, IS(0)));
+   }
    if (msg)
       return wa_roots_msg(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)),
                           P(1, D(1)), P(2, I(0)), P(3, IS(0)), MSG(c), c->msgcap);
@@ -685,6 +765,10 @@ static void check_roots(const call_t *c, int st, int invalid) {
             violation(c, K_NONFINITE, "root %d of %d: c* %.17g P* %.17g", k, n, cs, p);
             break;
          }
+         if (c->family == F_ROOTS_GAP && !(isfinite(D(2)[k]) && D(2)[k] >= 0)) {
+            violation(c, K_NONFINITE, "root %d of %d: gbar %.17g", k, n, D(2)[k]);
+            break;
+         }
          if (!ok_state(c->a, cs, z) || (k > 0 && z == WA_ZONE_INSIDE &&
                                          (I(0)[k - 1] != WA_ZONE_INSIDE || D(0)[k - 1] > cs))) {
             violation(c, K_STATE, "root %d of %d: a* %.17g c* %.17g zone %d (previous c* %.17g "
@@ -693,7 +777,8 @@ static void check_roots(const call_t *c, int st, int invalid) {
             break;
          }
       }
-      if (c->capacity >= 0) check_untouched(c, 2, 1, m, c->capacity);
+      if (c->capacity >= 0)
+         check_untouched(c, c->family == F_ROOTS_GAP ? 3 : 2, 1, m, c->capacity);
    } else if (n != 0) {
       violation(c, K_FAIL_OUTPUT, "status %d with n_roots %d (want 0)", st, n);
    }
@@ -703,6 +788,15 @@ static void check_roots(const call_t *c, int st, int invalid) {
 static int run_branch(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
+   if (c->family == F_TRACE_BRANCH_GAP) {
+      if (msg)
+         return wa_trace_branch_gap_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
+                                        P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)),
+                                        P(5, I(2)), P(7, D(3)), P(6, IS(0)), MSG(c), c->msgcap);
+      return wa_trace_branch_gap(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
+                                 P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
+                                 P(7, D(3)), P(6, IS(0)));
+   }
    if (msg)
       return wa_trace_branch_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
                                  P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
@@ -731,6 +825,10 @@ static void check_branch(const call_t *c, int st, int invalid) {
                       cs, p);
             break;
          }
+         if (c->family == F_TRACE_BRANCH_GAP && !(isfinite(D(3)[k]) && D(3)[k] >= 0)) {
+            violation(c, K_NONFINITE, "point %d of %d: gbar %.17g", k, n, D(3)[k]);
+            break;
+         }
          if (!ok_state(a, cs, z) || (s != 0 && s != 1) || e < WA_EVENT_NONE ||
              e > WA_EVENT_A_TURN || (e >= WA_EVENT_JUMP_START && e <= WA_EVENT_PULL_OFF) ||
              (e == WA_EVENT_FOLD && s != 0) ||
@@ -754,7 +852,8 @@ static void check_branch(const call_t *c, int st, int invalid) {
             }
             k++;
          }
-      if (c->capacity >= 0) check_untouched(c, 3, 3, m, c->capacity);
+      if (c->capacity >= 0)
+         check_untouched(c, c->family == F_TRACE_BRANCH_GAP ? 4 : 3, 3, m, c->capacity);
    } else if (n != 0) {
       violation(c, K_FAIL_OUTPUT, "status %d with n_points %d (want 0)", st, n);
    }
@@ -907,6 +1006,69 @@ static void check_sweep(const call_t *c, int st, int invalid) {
    }
 }
 
+/* wa_profile[_msg]: x* in dbuf[0] (read only), traction and gap in dbuf[1..2]. The c* of
+   the call: a root of wa_roots_gap when `pick` >= 0 and the roots exist (prof_picked). */
+static double prof_cs, prof_x[FILL];
+static int prof_picked;
+
+static int run_profile(const call_t *c, int msg) {
+   int n = c->capacity > 0 ? c->capacity : 0;
+   prof_cs = c->cs;
+   prof_picked = 0;
+   if (c->pick >= 0 && valid_model(c->model) && valid_alpha(c->alpha) && valid_mu(c->mu) &&
+       valid_a(c->a) && !(c->model == WA_MODEL_MD && c->a == 0) &&
+       !(c->model == WA_MODEL_DW && c->a == 0) && !(c->model == WA_MODEL_JKR && c->a == 0.5)) {
+      double cs[16], ps[16], gs[16];
+      int zs[16], nr = 0;
+      lib_call();
+      if (wa_roots_gap(c->model, c->alpha, c->mu, c->a, 16, cs, ps, zs, gs, &nr) == WA_OK &&
+          nr > 0) {
+         prof_cs = cs[c->pick % nr];
+         prof_picked = 1;
+      }
+   }
+   fill_buffers(n);
+   make_x(c, prof_cs, D(0), n);
+   memcpy(prof_x, D(0), n * sizeof(double));
+   lib_call();
+   if (msg)
+      return wa_profile_msg(c->model, c->alpha, c->mu, c->a, prof_cs, c->capacity, P(0, D(0)),
+                            P(1, D(1)), P(2, D(2)), MSG(c), c->msgcap);
+   return wa_profile(c->model, c->alpha, c->mu, c->a, prof_cs, c->capacity, P(0, D(0)),
+                     P(1, D(1)), P(2, D(2)));
+}
+
+static void check_profile(const call_t *c, int st, int invalid) {
+   int n = c->capacity > 0 ? c->capacity : 0, k;
+   unsigned nm = c->null_mask;
+   /* a random c* is rarely a state's: WA_NO_SOLUTION is then the answer, not a report */
+   if (invalid || prof_picked || st != WA_NO_SOLUTION) check_status(c, st, 0x2F, invalid);
+   if (!(nm & 1u) && memcmp(D(0), prof_x, n * sizeof(double)) != 0)
+      violation(c, K_OVERRUN, "the input x_star was modified");
+   for (k = 0; k < n; k++) {
+      double x = D(0)[k], t = D(1)[k], h = D(2)[k], xr = fabs(x - round(x));
+      if (st != WA_OK) {
+         if ((!(nm & 2u) && !isnan(t)) || (!(nm & 4u) && !isnan(h))) {
+            violation(c, K_FAIL_OUTPUT, "status %d, point %d: traction %.17g gap %.17g (want "
+                      "NaN)", st, k, t, h);
+            return;
+         }
+         continue;
+      }
+      if (!(isfinite(h) && h >= 0) ||
+          !(isfinite(t) || (c->model == WA_MODEL_JKR && t == -INFINITY && xr == c->a))) {
+         violation(c, K_NONFINITE, "point %d of %d: x* %.17g traction %.17g gap %.17g", k, n,
+                   x, t, h);
+         return;
+      }
+      if (xr < c->a && h != 0) {
+         violation(c, K_VALUE, "point %d: x* %.17g on the contact (a* %.17g), gap %.17g", k,
+                   x, c->a, h);
+         return;
+      }
+   }
+}
+
 /* ------------------------------------------------------------ one call */
 
 /* Does the header call these arguments invalid (WA_INVALID_ARGUMENT expected)? */
@@ -928,6 +1090,19 @@ static int is_invalid(const call_t *c) {
    case F_LOAD_PATH:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
              (nm & 0xE0u) || cap < 0 || (cap > 0 && (nm & 31u));
+   case F_EQUILIBRIUM_GAP:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             !valid_a(c->a) || (nm & 15u);
+   case F_ROOTS_GAP:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             !valid_a(c->a) || (nm & 8u) || cap < 0 || (cap > 0 && (nm & 23u));
+   case F_TRACE_BRANCH_GAP:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             (nm & 64u) || cap < 0 || (cap > 0 && (nm & 191u));
+   case F_PROFILE:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             !valid_a(c->a) || !(c->cs >= 0 && c->cs <= 0.5) || cap < 0 ||
+             (cap > 0 && ((nm & 7u) || c->x_bad));
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
                    (c->n_mu > 0 && (nm & 31u));
@@ -958,6 +1133,10 @@ static int run_family(const call_t *c, int msg) {
    case F_CRITICAL_FORCES: return run_critical(c, msg);
    case F_LOAD_PATH: return run_path(c, msg);
    case F_CRITICAL_SWEEP: return run_sweep(c, msg);
+   case F_EQUILIBRIUM_GAP: return run_equilibrium(c, msg);
+   case F_ROOTS_GAP: return run_roots(c, msg);
+   case F_TRACE_BRANCH_GAP: return run_branch(c, msg);
+   case F_PROFILE: return run_profile(c, msg);
    }
    return -1;
 }
@@ -970,17 +1149,24 @@ static void check_family(const call_t *c, int st, int invalid) {
    case F_CRITICAL_FORCES: check_critical(c, st, invalid); break;
    case F_LOAD_PATH: check_path(c, st, invalid); break;
    case F_CRITICAL_SWEEP: check_sweep(c, st, invalid); break;
+   case F_EQUILIBRIUM_GAP: check_equilibrium(c, st, invalid); break;
+   case F_ROOTS_GAP: check_roots(c, st, invalid); break;
+   case F_TRACE_BRANCH_GAP: check_branch(c, st, invalid); break;
+   case F_PROFILE: check_profile(c, st, invalid); break;
    }
 }
 
 static int used_elements(const call_t *c, int st) {
-   int n;
-   if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
-   if (c->family != F_ROOTS && c->family != F_TRACE_BRANCH && c->family != F_LOAD_PATH)
+   int n, f = c->family;
+   if (f == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
+   if (f == F_PROFILE) return c->capacity > 0 ? c->capacity : 0;
+   if (f == F_ROOTS_GAP) f = F_ROOTS;
+   if (f == F_TRACE_BRANCH_GAP) f = F_TRACE_BRANCH;
+   if (f != F_ROOTS && f != F_TRACE_BRANCH && f != F_LOAD_PATH)
       return 0;
    if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) return 0;
    n = *IS(0);
-   if (c->null_mask & (c->family == F_ROOTS ? 8u : c->family == F_TRACE_BRANCH ? 64u : 32u))
+   if (c->null_mask & (f == F_ROOTS ? 8u : f == F_TRACE_BRANCH ? 64u : 32u))
       return 0;
    if (n > c->capacity) n = c->capacity;
    return n < 0 ? 0 : n;
@@ -990,7 +1176,8 @@ static int used_elements(const call_t *c, int st) {
    tail guard). */
 static int filled_elements(const call_t *c) {
    if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
-   if (c->family == F_ROOTS || c->family == F_TRACE_BRANCH || c->family == F_LOAD_PATH)
+   if (c->family == F_ROOTS || c->family == F_TRACE_BRANCH || c->family == F_LOAD_PATH ||
+       c->family == F_ROOTS_GAP || c->family == F_TRACE_BRANCH_GAP || c->family == F_PROFILE)
       return c->capacity > 0 ? c->capacity : 0;
    return 0;
 }
@@ -1067,7 +1254,8 @@ static void run_version(const call_t *c) {
 
 /* Cross checks after a successful call (extra library calls, same watchdog). */
 static void cross_check(const call_t *c, int st, rng_t *r) {
-   if (c->family == F_ROOTS && st == WA_OK && !(c->null_mask & 15u) && c->capacity > 0 &&
+   if ((c->family == F_ROOTS || c->family == F_ROOTS_GAP) && st == WA_OK &&
+       !(c->null_mask & (c->family == F_ROOTS ? 15u : 31u)) && c->capacity > 0 &&
        c->capacity <= FILL) {
       int n = *IS(0), st2;
       double c0 = D(0)[0], p0 = D(1)[0];
@@ -1084,6 +1272,10 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
                 *IS(0) != z0))
          violation(c, K_ROOTS_VALUE, "roots[0] c* %.17g P* %.17g zone %d; equilibrium c* "
                    "%.17g P* %.17g zone %d", c0, p0, z0, *DS(0), *DS(1), *IS(0));
+      else if (n > 0 && c->family == F_ROOTS_GAP &&
+               !(fabs(*DS(2) - D(2)[0]) <= 1e-9 * (1 + fabs(D(2)[0]))))
+         violation(c, K_ROOTS_VALUE, "roots_gap[0] gbar %.17g; equilibrium_gap gbar %.17g",
+                   D(2)[0], *DS(2));
    }
    if (c->family == F_CRITICAL_SWEEP && st == WA_OK && c->n_mu > 0 && !(c->null_mask & 31u) &&
        unif(r) < 0.5) {
@@ -1147,7 +1339,7 @@ static void run_one(long index) {
       if (dt > shm->max_seconds[fn]) shm->max_seconds[fn] = dt;
       count_status(&c, st);
       if (opt_only >= 0) printf("call %ld: %s\n   -> status %d\n", index, c.repro, st);
-      check_guards(&c, 3, 3, filled_elements(&c));
+      check_guards(&c, N_DBUF, 3, filled_elements(&c));
       check_message(&c, st, !invalid && all_finite_valid_sign(&c));
       check_family(&c, st, invalid);
       if (opt_only >= 0 && c.msg && !c.msg_null && c.msgcap > 0)
