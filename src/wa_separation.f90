@@ -146,7 +146,7 @@ contains
          return
       end if
       lambda = sigma0/(2.0_wp*q*sqrt(d2))
-      g = g + lambda*(d2*(-log_a2(c, qc)) + a*a*y_minus_log1p(d2/(a*a)))
+      g = g + lambda*(d2*(-log_a2(c, qc)) + a2_excess(a, d2))
    end function dw_mean_gap
 
    !> MD mean gap of a solved state (zone cases 0-3); the quadrature of
@@ -602,6 +602,21 @@ contains
    end function log_a2
 
    !> y - ln(1 + y) >= 0 without cancellation.
+   !> A^2 (y - ln(1 + y)), y = d2/A^2, also where A^2 underflows or A = 0 (the a* -> 0
+   !> limit d2): for y > 1e12, d2 - A (A (ln d2 - 2 ln A)) (the ln(1+y) - ln y tail is
+   !> below 1e-12 relative and A^2 is never formed).
+   elemental function a2_excess(a, d2) result(e)
+      real(wp), intent(in) :: a, d2
+      real(wp) :: e
+      if (a <= 0.0_wp) then
+         e = d2
+      else if (d2 > 1.0e12_wp*a*a .or. a*a < tiny(a)) then
+         e = d2 - a*(a*(log(d2) - 2.0_wp*log(a)))
+      else
+         e = a*a*y_minus_log1p(d2/(a*a))
+      end if
+   end function a2_excess
+
    elemental function y_minus_log1p(y) result(f)
       real(wp), intent(in) :: y
       real(wp) :: f, term
@@ -772,7 +787,7 @@ contains
       end if
       g = gw_of(ctx%a**2, ctx%q**2)
       if (ctx%d2 > 0.0_wp) g = g + ctx%lambda_d2*(-log_a2(ctx%c, ctx%qc)) &
-         + ctx%lambda*ctx%a**2*y_minus_log1p(ctx%d2/ctx%a**2)
+         + ctx%lambda*a2_excess(ctx%a, ctx%d2)
    end function dw_gbar
 
    pure function md_gbar(ctx) result(g)
@@ -951,7 +966,7 @@ contains
       d2 = ctx%d2
       rc = sqrt(max(0.0_wp, sin(-pi*c_minus(ctx, xr))*sin_pi_c_plus(ctx, xr)))
       z = d2/((ra + rc)*(s + rc))
-      dd = 2.0_wp*(0.5_wp*ctx%a**2*y_minus_log1p(d2/ctx%a**2) + ctx%a**2*y_minus_log1p(z) &
+      dd = 2.0_wp*(0.5_wp*a2_excess(ctx%a, d2) + ctx%a**2*y_minus_log1p(z) &
          + d2*d2*(2.0_wp*ra + rc - s)/(2.0_wp*(ra + rc)**2*(s + rc)) + d2*asinh(rc/ctx%c))
    end function dw_difference
 

@@ -865,6 +865,8 @@ static void test_adhesion_map(void) {
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL alpha refused");
    st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, NULL);
    CHECK(st == WA_INVALID_ARGUMENT, "adhesion_map NULL n_out refused");
+}
+
 /* ---------------------------------------------------------------- separation */
 
 /* Mean over one period of f sampled at n midpoints of [-1/2, 1/2]. */
