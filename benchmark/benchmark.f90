@@ -39,6 +39,8 @@ program benchmark
    call bench_branch(model_dw, 0.6_wp, 3.0_wp)
    call bench_branch(model_md, 0.3_wp, 1.0_wp)
    call bench_branch(model_md, 0.3_wp, 5.0_wp)
+   call bench_branch_grid(model_dw)
+   call bench_branch_grid(model_md)
    call bench_critical()
    call bench_map(model_dw)
    call bench_map(model_md)
@@ -160,6 +162,38 @@ contains
          " alpha ", alpha, " mu ", mu, ": ", 1.0e3_wp*median(times), " ms  (", b%n, &
          " points, ", count(b%event(1:b%n) == event_fold), " folds, status ", status, ")"
    end subroutine bench_branch
+
+   !> The slowest trace over the 7 x 7 grid alpha in {0.01, 0.1, 0.3, 0.6, 1, 3, 10} x
+   !> mu in {0.001 .. 1000} (the main range; best of 3 runs per case).
+   subroutine bench_branch_grid(model)
+      integer, intent(in) :: model
+      real(wp), parameter :: alphas(7) = [0.01_wp, 0.1_wp, 0.3_wp, 0.6_wp, 1.0_wp, 3.0_wp, &
+         10.0_wp], mus(7) = [0.001_wp, 0.01_wp, 0.1_wp, 1.0_wp, 10.0_wp, 100.0_wp, 1000.0_wp]
+      type(params_type) :: params
+      type(branch_type) :: b
+      real(wp) :: t0, t, best, worst, worst_alpha, worst_mu
+      integer :: i, j, r, status, n_fail
+      worst = 0.0_wp; worst_alpha = 0.0_wp; worst_mu = 0.0_wp; n_fail = 0
+      do i = 1, 7
+         do j = 1, 7
+            call new_params(alphas(i), mus(j), params, status)
+            best = huge(1.0_wp)
+            do r = 1, 3
+               t0 = seconds()
+               call trace_branch(model, params, b, status)
+               t = seconds() - t0
+               best = min(best, t)
+            end do
+            if (status /= wa_ok) n_fail = n_fail + 1
+            if (best > worst) then
+               worst = best; worst_alpha = alphas(i); worst_mu = mus(j)
+            end if
+         end do
+      end do
+      write (*, '(a,a,a,f8.3,a,g10.3,a,g10.3,a,i0)') "branch ", name(model), &
+         " 7x7 grid (alpha 0.01..10, mu 0.001..1000): slowest ", 1.0e3_wp*worst, &
+         " ms at alpha ", worst_alpha, " mu ", worst_mu, "; failures ", n_fail
+   end subroutine bench_branch_grid
 
    subroutine bench_critical()
       real(wp), parameter :: alphas(3) = [0.3_wp, 0.6_wp, 1.0_wp]
