@@ -15,7 +15,8 @@ module wa_gappath
       zone_full_contact, model_md
    use wa_models, only: model_roots, max_model_roots
    use wa_separation, only: state_mean_gap, md_no_contact_state
-   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end
+   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
+      event_a_turn
    implicit none
    private
 
@@ -81,8 +82,11 @@ contains
    end subroutine gap_path
 
    !> Approach from far apart to full contact and retraction, on a traced branch.
-   subroutine gap_path_from_branch(model, params, branch, path, status, errmsg)
+   subroutine gap_path_from_branch(model, params, branch, path, status, errmsg, nodes, splits)
       integer, intent(in) :: model
+      !> Gauss-Legendre nodes per panel (default 12) and panels per chain interval
+      !> (default 1): for checking the quadrature of W*
+      integer, intent(in), optional :: nodes, splits
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
       type(gap_path_type), intent(out) :: path
@@ -90,7 +94,7 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       type(chain_type) :: ch
       type(stretch_type) :: walked(2*max_jumps + 4)
-      integer :: n_walked
+      integer :: n_walked, n_nodes, n_splits
 
       call build_chain(model, params, branch, ch, status, errmsg)
       if (status /= wa_ok) return
@@ -103,7 +107,12 @@ contains
       if (status /= wa_ok) return
       call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
       if (status /= wa_ok) return
-      call energy_lost(model, params, ch, walked(1:n_walked), path%w_star, status, errmsg)
+      n_nodes = n_gauss
+      n_splits = 1
+      if (present(nodes)) n_nodes = max(2, min(nodes, 64))
+      if (present(splits)) n_splits = max(1, min(splits, 64))
+      call energy_lost(model, params, ch, walked(1:n_walked), n_nodes, n_splits, path%w_star, &
+         status, errmsg)
       if (status /= wa_ok) return
       path%w_star = max(path%w_star, 0.0_wp)
       path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
@@ -514,8 +523,8 @@ contains
    !> of each piece of the chain times its integral (stretches walked both ways cancel
    !> exactly). Each piece: Gauss-Legendre panels in the parameter with dgbar*/dparam
    !> from the interpolating polynomial through the nodes; graded towards a parameter 0.
-   subroutine energy_lost(model, params, ch, walked, w, status, errmsg)
-      integer, intent(in) :: model
+   subroutine energy_lost(model, params, ch, walked, n_nodes, n_splits, w, status, errmsg)
+      integer, intent(in) :: model, n_nodes, n_splits
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
       type(stretch_type), intent(in) :: walked(:)
@@ -546,9 +555,12 @@ contains
                m = m + sign(1.0_wp, walked(k)%s2 - walked(k)%s1)
          end do
          if (m == 0.0_wp) cycle
-         call piece_integral(model, params, ch, lo, hi, integral, status, errmsg)
-         if (status /= wa_ok) return
-         w = w - m*integral
+         do k = 1, n_splits
+            call piece_integral(model, params, ch, lo + (hi - lo)*real(k - 1, wp)/n_splits, &
+               lo + (hi - lo)*real(k, wp)/n_splits, n_nodes, integral, status, errmsg)
+            if (status /= wa_ok) return
+            w = w - m*integral
+         end do
       end do
    contains
       subroutine put(x)
@@ -576,19 +588,19 @@ contains
    end subroutine sort
 
    !> int P* dgbar* from s = lo to s = hi within one chain interval.
-   subroutine piece_integral(model, params, ch, lo, hi, integral, status, errmsg)
-      integer, intent(in) :: model
+   subroutine piece_integral(model, params, ch, lo, hi, n_nodes, integral, status, errmsg)
+      integer, intent(in) :: model, n_nodes
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
       real(wp), intent(in) :: lo, hi
       real(wp), intent(out) :: integral
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      integer :: i, k, n_panels
-      real(wp) :: x0, x1, y0, y1, part
+      integer :: i, k, n_panels, turn
+      real(wp) :: x0, x1, y0, y1, part, a_t, a_o
       status = wa_ok
       integral = 0.0_wp
-      i = min(int(lo), ch%n - 2) + 1
+      i = min(int(0.5_wp*(lo + hi)), ch%n - 2) + 1
       x0 = param(ch, i, lo - real(i - 1, wp))
       x1 = param(ch, i, hi - real(i - 1, wp))
       if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact .and. &
@@ -596,7 +608,19 @@ contains
          integral = -params%sigma0*(ch%g(i + 1) - ch%g(i))*(hi - lo)
          return
       end if
-      if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
+      ! next to an a*-turn, a* - a_t ~ (c* - c_t)^2: integrate in u = sqrt((a - a_t)/(a_o - a_t))
+      turn = 0
+      if (param_kind(ch, i) == 0) then
+         if (ch%event(i) == event_a_turn) turn = i
+         if (ch%event(i + 1) == event_a_turn) turn = i + 1
+      end if
+      if (turn > 0) then
+         a_t = ch%a(turn)
+         a_o = ch%a(2*i + 1 - turn)
+         call panel(sqrt(max(0.0_wp, (x0 - a_t)/(a_o - a_t))), &
+            sqrt(max(0.0_wp, (x1 - a_t)/(a_o - a_t))), part)
+         integral = part
+      else if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
          ! graded panels towards the parameter's zero (a* -> 0 or c* -> 0)
          n_panels = 60
          do k = 1, n_panels
@@ -619,28 +643,29 @@ contains
       subroutine panel(u0, u1, res)
          real(wp), intent(in) :: u0, u1
          real(wp), intent(out) :: res
-         real(wp) :: xg(n_gauss), wg(n_gauss), x(n_gauss), pv(n_gauss), gv(n_gauss), &
-            bw(n_gauss), dg
+         real(wp) :: xg(n_nodes), wg(n_nodes), x(n_nodes), pv(n_nodes), gv(n_nodes), &
+            bw(n_nodes), dg
          type(state_type) :: s
          integer :: j, l
          res = 0.0_wp
          if (u1 == u0) return
          call gauss_legendre(xg, wg)
-         do j = 1, n_gauss
+         do j = 1, n_nodes
             x(j) = 0.5_wp*(u0 + u1) + 0.5_wp*(u1 - u0)*xg(j)
+            if (turn > 0) x(j) = a_t + (a_o - a_t)*x(j)**2
             call state_at_param(model, params, ch, i, x(j), s, status, errmsg)
             if (status /= wa_ok) return
             pv(j) = s%p_star; gv(j) = s%gbar
          end do
-         do j = 1, n_gauss                              ! barycentric weights in xg
+         do j = 1, n_nodes                              ! barycentric weights in xg
             bw(j) = 1.0_wp
-            do l = 1, n_gauss
+            do l = 1, n_nodes
                if (l /= j) bw(j) = bw(j)/(xg(j) - xg(l))
             end do
          end do
-         do j = 1, n_gauss                              ! d gbar / d xg at the nodes
+         do j = 1, n_nodes                              ! d gbar / d xg at the nodes
             dg = 0.0_wp
-            do l = 1, n_gauss
+            do l = 1, n_nodes
                if (l /= j) dg = dg + (bw(l)/bw(j))*(gv(l) - gv(j))/(xg(j) - xg(l))
             end do
             res = res + wg(j)*pv(j)*dg
