@@ -41,7 +41,14 @@ program wavyadhesion_cli
    case ("branch")
       call run_branch(opts, params)
    case ("path")
-      call run_path(opts, params)
+      if (allocated(opts%control)) then
+         if (opts%control == "gap") call run_gap_path(opts, params)
+      end if
+      if (.not. allocated(opts%control)) then
+         call run_path(opts, params)
+      else if (opts%control == "load") then
+         call run_path(opts, params)
+      end if
    case ("critical")
       call run_critical(opts, params, rows_failed)
    case default
@@ -195,6 +202,32 @@ contains
             [path%a_star(i), path%c_star(i), path%p_star(i)])
       end do
    end subroutine run_path
+
+   !> path --control gap: approach and retraction under mean-gap control.
+   subroutine run_gap_path(opts, params)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      type(gap_path_type) :: path
+      character(len=256) :: msg
+      integer :: i, status
+
+      msg = ""
+      call gap_path(opts%model, params, path, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(out, opts%format, "gap-controlled approach and retraction", &
+         model_name(opts%model), params, "stage event a_star c_star P_star gbar", &
+         [character(len=80) :: "stage: 1 approach (gbar* falling), 2 retraction (rising)", &
+         "event: 3 jump start, 4 jump end (at constant gbar*), 5 full contact reached,", &
+         "       6 full contact left, 10 first interaction (touch), 11 contact made,", &
+         "       12 contact lost, 13 interaction lost (P* = 0 beyond)", &
+         "energy lost per cycle W* = -oint P* dgbar* (units p* Delta):", &
+         "W* = "//format_real(path%w_star)//"  W*/(pi alpha^2/2) = "// &
+         format_real(path%w_fraction)])
+      do i = 1, path%n
+         call write_row_ints_first(out, opts%format, [path%stage(i), path%event(i)], &
+            [path%a_star(i), path%c_star(i), path%p_star(i), path%gbar(i)])
+      end do
+   end subroutine run_gap_path
 
    !> critical: P_fc and P_pf over alpha x mu. A failing (alpha, mu) never loses the
    !> table: its row is written with NaN forces, standard error names it and its reason,
@@ -383,7 +416,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(34) = [character(len=100) :: &
+      character(len=100), parameter :: text(36) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -395,7 +428,8 @@ contains
          "            (default; alpha=0.3, mu=1, dw)", &
          "  point     every equilibrium at given a*: --a-star X[,X...]", &
          "  path      loading and unloading under load control: jumps, full contact,", &
-         "            pull-off", &
+         "            pull-off; --control gap: approach and retraction under mean-gap", &
+         "            control (jumps, contact made/lost, energy lost per cycle W*)", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
          "            --mu-range LO:HI:N[:log]", &
          "", &
@@ -406,6 +440,7 @@ contains
          "  --mu-range LO:HI:N[:log]", &
          "                     N values of mu from LO to HI (critical only; not with --mu)", &
          "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &
+         "  --control C        load (default) | gap (path)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &
          "                     replaced only once the whole table is written", &

@@ -20,6 +20,8 @@ module wa_cli_options
       integer :: model = model_dw
       real(wp), allocatable :: alpha(:), mu(:), a_star(:)
       character(len=:), allocatable :: format, output
+      !> path: "load" (default) or "gap" (mean-gap control)
+      character(len=:), allocatable :: control
       logical :: help = .false., version = .false.
       !> SI inputs (NaN when not given)
       real(wp) :: e1, nu1, e2, nu2, estar, period, amplitude, work, peak
@@ -105,6 +107,8 @@ contains
          error = "--mu-range is only for the critical subcommand"
       else if (given(opts, "--a-star") .and. opts%command /= "point") then
          error = "--a-star is only for the point subcommand"
+      else if (given(opts, "--control") .and. opts%command /= "path") then
+         error = "--control is only for the path subcommand"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
@@ -161,6 +165,12 @@ contains
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
+      case ("--control")
+         if (val /= "load" .and. val /= "gap") then
+            error = "--control: '"//val//"' is not one of load, gap"
+         else
+            opts%control = val
+         end if
       case ("--format")
          if (val /= "table" .and. val /= "csv") then
             error = "--format: '"//val//"' is not one of table, csv"
