@@ -197,7 +197,8 @@ contains
          real(wp), intent(in) :: a, c, p, g
          integer, intent(in) :: zone, event
          if (ch%n > 0) then                          ! a joint repeats a state
-            if (ch%a(ch%n) == a .and. ch%c(ch%n) == c .and. ch%zone(ch%n) == zone) return
+            if (ch%a(ch%n) == a .and. ch%c(ch%n) == c .and. ch%g(ch%n) == g .and. &
+               ch%zone(ch%n) == zone) return
          end if
          ch%n = ch%n + 1
          ch%a(ch%n) = a; ch%c(ch%n) = c; ch%p(ch%n) = p; ch%g(ch%n) = g
@@ -603,8 +604,7 @@ contains
       i = min(int(0.5_wp*(lo + hi)), ch%n - 2) + 1
       x0 = param(ch, i, lo - real(i - 1, wp))
       x1 = param(ch, i, hi - real(i - 1, wp))
-      if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact .and. &
-         ch%c(i) == 0.5_wp .and. ch%c(i + 1) == 0.5_wp) then   ! P* = -Sigma0 exactly
+      if (param_kind(ch, i) == 2) then                ! P* = -Sigma0 exactly
          integral = -params%sigma0*(ch%g(i + 1) - ch%g(i))*(hi - lo)
          return
       end if
@@ -703,7 +703,10 @@ contains
       type(chain_type), intent(in) :: ch
       integer, intent(in) :: i
       param_kind = 0
-      if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact) param_kind = 1
+      if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact) then
+         param_kind = 1
+         if (ch%c(i) == 0.5_wp .and. ch%c(i + 1) == 0.5_wp) param_kind = 2
+      end if
    end function param_kind
 
    pure real(wp) function param(ch, i, t)
@@ -712,6 +715,8 @@ contains
       real(wp), intent(in) :: t
       if (param_kind(ch, i) == 1) then
          param = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
+      else if (param_kind(ch, i) == 2) then
+         param = ch%g(i) + t*(ch%g(i + 1) - ch%g(i))
       else
          param = ch%a(i) + t*(ch%a(i + 1) - ch%a(i))
       end if
@@ -738,6 +743,10 @@ contains
       integer :: zone
       if (param_kind(ch, i) == 1) then
          call md_no_contact_state(params, min(x, 0.5_wp - epsilon(x)), s, status, errmsg)
+         return
+      else if (param_kind(ch, i) == 2) then           ! zone over the period: gbar = 1 + crest gap
+         call md_no_contact_state(params, 0.5_wp, s, status, errmsg, &
+            crest_gap=min(max(x - 1.0_wp, 0.0_wp), 2.0_wp*params%dcod - 2.0_wp))
          return
       end if
       t = 0.5_wp

@@ -13,6 +13,7 @@ module unit_bridge
    use test_robustness, only: collect_robustness
    use test_sweep, only: collect_sweep
    use test_separation, only: collect_separation
+   use test_gappath, only: collect_gappath
    implicit none
    private
 
@@ -35,6 +36,7 @@ contains
       case ("robustness"); call collect_robustness(tests)
       case ("sweep"); call collect_sweep(tests)
       case ("separation"); call collect_separation(tests)
+      case ("gappath"); call collect_gappath(tests)
       case default; allocate (tests(0))
       end select
    end subroutine collect
