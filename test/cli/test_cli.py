@@ -400,3 +400,44 @@ def test_interrupted_run_removes_its_temporary_file(cli, tmp_path, sig):
     assert proc.returncode == 128 + sig
     assert files_in(tmp_path) == ["t.txt"]
     assert out.read_text() == "precious\n"
+
+
+def test_path_control_gap_md_events_and_energy(cli):
+    # issue 11: approach and retraction under mean-gap control, with W* in the header
+    res = run(cli, "path", "--control", "gap", "--model", "md", "--alpha", "0.3", "--mu", "1",
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == ["stage", "event", "a_star", "c_star", "P_star", "gbar"]
+    events = [(int(r["stage"]), int(r["event"])) for r in table]
+    assert events == [(1, 10), (1, 3), (1, 4), (1, 11), (1, 3), (1, 4), (1, 5),
+                      (2, 6), (2, 3), (2, 4), (2, 12), (2, 3), (2, 4), (2, 13)]
+    for start, end in zip(table, table[1:]):
+        if start["event"] == "3":          # a jump keeps the mean gap
+            assert end["event"] == "4"
+            assert float(end["gbar"]) == pytest.approx(float(start["gbar"]), abs=1e-12)
+    header = run(cli, "path", "--control", "gap", "--model", "md", "--alpha", "0.3",
+                 "--mu", "1").stdout
+    w_line = [line for line in header.splitlines() if line.startswith("# W* = ")]
+    assert len(w_line) == 1
+    w_star = float(w_line[0].split()[3])
+    assert 0.0 < w_star < 0.01
+
+
+def test_path_control_gap_westergaard_has_no_hysteresis(cli):
+    res = run(cli, "path", "--control", "gap", "--model", "westergaard")
+    assert "# W* = 0.0000000000000000E+000" in res.stdout
+
+
+def test_path_control_load_is_the_default(cli):
+    assert run(cli, "path", "--control", "load").stdout == run(cli, "path").stdout
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["path", "--control", "force"], "--control"),
+    (["branch", "--control", "gap"], "--control"),
+])
+def test_control_usage_errors(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
+    assert needle in res.stderr
+    assert res.stdout == ""
