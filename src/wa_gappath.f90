@@ -12,11 +12,11 @@ module wa_gappath
    use wa_status, only: wa_ok, wa_numerical_error, set_error
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
-      zone_full_contact, model_md
+      zone_full_contact, model_md, model_dw
    use wa_models, only: model_roots, max_model_roots
    use wa_separation, only: state_mean_gap, md_no_contact_state
-   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
-      event_a_turn
+   use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
+   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end
    implicit none
    private
 
@@ -55,7 +55,10 @@ module wa_gappath
    type :: chain_type
       integer :: n = 0
       real(wp), allocatable :: a(:), c(:), p(:), g(:)
+      !> curve variable y (wa_curve) of case-1 points of DW and MD, else 0
+      real(wp), allocatable :: y(:)
       integer, allocatable :: zone(:), event(:)
+      integer :: model = 0
       logical, allocatable :: extremum(:), stable_after(:)
       !> true when the chain's first point is the end of the P* = 0 states (MD)
       logical :: joined = .false.
@@ -188,7 +191,15 @@ contains
             "full contact", status, errmsg)
          return
       end if
-      allocate (ch%extremum(ch%n), ch%stable_after(ch%n))
+      allocate (ch%extremum(ch%n), ch%stable_after(ch%n), ch%y(ch%n))
+      ch%model = model
+      ch%y = 0.0_wp
+      if (model == model_dw .or. model == model_md) then
+         do i = 1, ch%n
+            if (ch%zone(i) == zone_inside .and. params%sigma0 > 0.0_wp) &
+               ch%y(i) = curve_variable(model, chain_state(ch, i))
+         end do
+      end if
       ch%extremum = .false.
       ch%stable_after = .false.
    contains
@@ -597,8 +608,8 @@ contains
       real(wp), intent(out) :: integral
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      integer :: i, k, n_panels, turn
-      real(wp) :: x0, x1, y0, y1, part, a_t, a_o
+      integer :: i, k, n_panels
+      real(wp) :: x0, x1, y0, y1, part
       status = wa_ok
       integral = 0.0_wp
       i = min(int(0.5_wp*(lo + hi)), ch%n - 2) + 1
@@ -608,19 +619,7 @@ contains
          integral = -params%sigma0*(ch%g(i + 1) - ch%g(i))*(hi - lo)
          return
       end if
-      ! next to an a*-turn, a* - a_t ~ (c* - c_t)^2: integrate in u = sqrt((a - a_t)/(a_o - a_t))
-      turn = 0
-      if (param_kind(ch, i) == 0) then
-         if (ch%event(i) == event_a_turn) turn = i
-         if (ch%event(i + 1) == event_a_turn) turn = i + 1
-      end if
-      if (turn > 0) then
-         a_t = ch%a(turn)
-         a_o = ch%a(2*i + 1 - turn)
-         call panel(sqrt(max(0.0_wp, (x0 - a_t)/(a_o - a_t))), &
-            sqrt(max(0.0_wp, (x1 - a_t)/(a_o - a_t))), part)
-         integral = part
-      else if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
+if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
          ! graded panels towards the parameter's zero (a* -> 0 or c* -> 0)
          n_panels = 60
          do k = 1, n_panels
@@ -652,7 +651,6 @@ contains
          call gauss_legendre(xg, wg)
          do j = 1, n_nodes
             x(j) = 0.5_wp*(u0 + u1) + 0.5_wp*(u1 - u0)*xg(j)
-            if (turn > 0) x(j) = a_t + (a_o - a_t)*x(j)**2
             call state_at_param(model, params, ch, i, x(j), s, status, errmsg)
             if (status /= wa_ok) return
             pv(j) = s%p_star; gv(j) = s%gbar
@@ -706,6 +704,12 @@ contains
       if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact) then
          param_kind = 1
          if (ch%c(i) == 0.5_wp .and. ch%c(i + 1) == 0.5_wp) param_kind = 2
+      else if (ch%zone(i) == zone_inside .and. ch%zone(i + 1) == zone_inside .and. &
+         (ch%model == model_dw .or. ch%model == model_md) .and. ch%event(i) /= event_switch &
+         .and. ch%event(i + 1) /= event_switch) then
+         ! steep in the (a*, w y) plane: y is the parameter (a* turns back there)
+         if (abs(ch%a(i + 1) - ch%a(i)) < curve_weight(ch%model)*abs(ch%y(i + 1) - ch%y(i))) &
+            param_kind = 3
       end if
    end function param_kind
 
@@ -717,6 +721,8 @@ contains
          param = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
       else if (param_kind(ch, i) == 2) then
          param = ch%g(i) + t*(ch%g(i + 1) - ch%g(i))
+      else if (param_kind(ch, i) == 3) then
+         param = ch%y(i) + t*(ch%y(i + 1) - ch%y(i))
       else
          param = ch%a(i) + t*(ch%a(i + 1) - ch%a(i))
       end if
@@ -727,7 +733,8 @@ contains
       integer, intent(in) :: i
       type(state_type) :: s
       s%a_star = ch%a(i); s%c_star = ch%c(i); s%p_star = ch%p(i); s%gbar = ch%g(i)
-      s%zone_case = ch%zone(i); s%gap_width = ch%c(i)
+      s%zone_case = ch%zone(i)
+      s%gap_width = ch%c(i) - ch%a(i)                 ! c* - a* (wa_state)
    end function chain_state
 
    !> The state of chain interval i at parameter x (with its gbar*).
@@ -748,6 +755,9 @@ contains
          call md_no_contact_state(params, 0.5_wp, s, status, errmsg, &
             crest_gap=min(max(x - 1.0_wp, 0.0_wp), 2.0_wp*params%dcod - 2.0_wp))
          return
+      else if (param_kind(ch, i) == 3) then
+         call solve_at_y(model, params, ch, i, x, s, status, errmsg)
+         return
       end if
       t = 0.5_wp
       if (ch%a(i + 1) /= ch%a(i)) t = (x - ch%a(i))/(ch%a(i + 1) - ch%a(i))
@@ -759,6 +769,46 @@ contains
          zone = ch%zone(i + 1)
       call solve_at_a(model, params, x, c_guess, zone, s, status, errmsg)
    end subroutine state_at_param
+
+   !> The case-1 state of chain interval i at curve variable y: Brent on F(a*, y) in a*
+   !> over the interval's a* range, widened until F changes sign.
+   subroutine solve_at_y(model, params, ch, i, y, s, status, errmsg)
+      use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: y
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: lo, hi, f_lo, f_hi, width, a
+      logical :: done
+      integer :: iter
+      width = abs(ch%a(i + 1) - ch%a(i)) + 1.0e-14_wp
+      lo = min(ch%a(i), ch%a(i + 1)); hi = max(ch%a(i), ch%a(i + 1))
+      do iter = 1, 60
+         lo = max(lo - width, 0.5_wp*lo)
+         hi = min(hi + width, 0.5_wp*(hi + 0.5_wp))
+         f_lo = curve_residual(model, params, lo, y)
+         f_hi = curve_residual(model, params, hi, y)
+         if (f_lo*f_hi <= 0.0_wp) exit
+         width = 2.0_wp*width
+      end do
+      if (.not. (f_lo*f_hi <= 0.0_wp)) then
+         call set_error(wa_numerical_error, "gap_path: no case-1 state at this curve "// &
+            "variable near the branch", status, errmsg)
+         return
+      end if
+      call brent_init(solver, lo, f_lo, hi, f_hi, 1.0e-16_wp)
+      do iter = 1, 200
+         call brent_propose(solver, a, done)
+         if (done) exit
+         call brent_accept(solver, curve_residual(model, params, a, y))
+      end do
+      s = curve_state(model, params, solver%b, y)
+      call state_mean_gap(model, params, s, s%gbar, status, errmsg)
+   end subroutine solve_at_y
 
    !> The equilibrium at a* nearest c_guess (in zone case `zone` unless zone < 0).
    subroutine solve_at_a(model, params, a, c_guess, zone, s, status, errmsg)
