@@ -117,7 +117,14 @@ contains
       call energy_lost(model, params, ch, walked(1:n_walked), n_nodes, n_splits, path%w_star, &
          status, errmsg)
       if (status /= wa_ok) return
-      path%w_star = max(path%w_star, 0.0_wp)
+      if (path%w_star < 0.0_wp) then                 ! rounding only: the terms are O(1)
+         if (path%w_star < -1.0e-14_wp) then
+            call set_error(wa_numerical_error, "gap_path: negative energy lost per cycle "// &
+               "(the walk or the quadrature failed)", status, errmsg)
+            return
+         end if
+         path%w_star = 0.0_wp
+      end if
       path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
    end subroutine gap_path_from_branch
 
@@ -240,6 +247,7 @@ contains
          call refine_extremum(model, params, ch, i, s, status, errmsg)
          if (status /= wa_ok) return
          ch%a(i) = s%a_star; ch%c(i) = s%c_star; ch%p(i) = s%p_star; ch%g(i) = s%gbar
+         if (ch%y(i) /= 0.0_wp) ch%y(i) = curve_variable(model, chain_state(ch, i))
       end do
       stable = .true.
       do i = ch%n - 1, 1, -1
