@@ -22,7 +22,8 @@ contains
          new_unittest("energy_nonnegative", test_nonnegative), &
          new_unittest("jumps_at_gbar_extrema", test_jumps), &
          new_unittest("md_event_sequence", test_md_events), &
-         new_unittest("dw_quadrature_converged", test_dw_quadrature)]
+         new_unittest("dw_quadrature_converged", test_dw_quadrature), &
+         new_unittest("md_quadrature_converged", test_md_quadrature)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -171,5 +172,25 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_dw_quadrature
+
+   !> The same for MD, where case-1 intervals near an a*-turn use the curve variable.
+   subroutine test_md_quadrature(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(branch_type) :: b
+      type(gap_path_type) :: p1, p2
+      integer :: status, k
+      real(wp), parameter :: cases(3, 5) = reshape([0.3_wp, 1.0_wp, 1.0e-11_wp, &
+         0.3_wp, 5.0_wp, 1.0e-11_wp, 1.0_wp, 1.0_wp, 1.0e-10_wp, 0.6_wp, 1.0_wp, 1.0e-11_wp, &
+         1.0_wp, 0.3_wp, 1.0e-9_wp], [3, 5])
+      do k = 1, size(cases, 2)
+         call new_params(cases(1, k), cases(2, k), params, status)
+         call trace_branch(model_md, params, b, status)
+         call gap_path_from_branch(model_md, params, b, p1, status)
+         call gap_path_from_branch(model_md, params, b, p2, status, nodes=20, splits=2)
+         call check_close(error, p1%w_star, p2%w_star, cases(3, k), what="MD W* quadrature")
+         if (allocated(error)) return
+      end do
+   end subroutine test_md_quadrature
 
 end module test_gappath
