@@ -9,7 +9,8 @@
 !> the parity of the number of gbar* extrema between a state and full contact.
 module wa_gappath
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_numerical_error, set_error
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use wa_status, only: wa_ok, wa_numerical_error, wa_invalid_argument, set_error
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
       zone_full_contact, model_md, model_dw
@@ -20,7 +21,7 @@ module wa_gappath
    implicit none
    private
 
-   public :: gap_path_type, gap_path, gap_path_from_branch
+   public :: gap_path_type, gap_path, gap_path_from_branch, gap_law
    public :: gap_stage_approach, gap_stage_retraction
    public :: gap_event_jump_start, gap_event_jump_end, gap_event_full_contact_reached, &
       gap_event_full_contact_left, gap_event_touch, gap_event_contact_made, &
@@ -128,6 +129,158 @@ contains
       path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
    end subroutine gap_path_from_branch
 
+   !> The gap law: P* on approach and on retraction at each mean gap gbar(k) >= 0, and
+   !> the slopes dP*/dgbar* (P* = 0 and slope 0 where the surfaces do not interact; at
+   !> gbar* = 0, full contact, P* at a* -> 1/2 and the slope on the stable stretch).
+   subroutine gap_law(model, params, gbar, p_approach, p_retract, dpdg_approach, &
+      dpdg_retract, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: gbar(:)
+      real(wp), intent(out) :: p_approach(:), p_retract(:), dpdg_approach(:), dpdg_retract(:)
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type) :: branch
+      type(chain_type) :: ch
+      type(gap_path_type) :: path
+      type(stretch_type) :: walked(2*max_jumps + 4)
+      integer :: n_walked, n_approach, k
+
+      p_approach = 0.0_wp; p_retract = 0.0_wp; dpdg_approach = 0.0_wp; dpdg_retract = 0.0_wp
+      if (size(p_approach) /= size(gbar) .or. size(p_retract) /= size(gbar) .or. &
+         size(dpdg_approach) /= size(gbar) .or. size(dpdg_retract) /= size(gbar)) then
+         call set_error(wa_invalid_argument, "gap_law: the output arrays must have the "// &
+            "size of gbar", status, errmsg)
+         return
+      end if
+      do k = 1, size(gbar)
+         if (.not. (ieee_is_finite(gbar(k)) .and. gbar(k) >= 0.0_wp)) then
+            call set_error(wa_invalid_argument, "gbar: must be finite and >= 0 (the mean "// &
+               "gap over the wave amplitude)", status, errmsg)
+            return
+         end if
+      end do
+      call trace_branch(model, params, branch, status, errmsg)
+      if (status /= wa_ok) return
+      call build_chain(model, params, branch, ch, status, errmsg)
+      if (status /= wa_ok) return
+      path%g_touch = 1.0_wp
+      if (ch%joined) path%g_touch = ch%g(1)
+      call locate_extrema(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
+      n_walked = 0
+      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      n_approach = n_walked
+      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      do k = 1, size(gbar)
+         call law_at(walked(1:n_approach), gbar(k), p_approach(k), dpdg_approach(k))
+         if (status /= wa_ok) return
+         call law_at(walked(n_approach + 1:n_walked), gbar(k), p_retract(k), dpdg_retract(k))
+         if (status /= wa_ok) return
+      end do
+   contains
+      !> P* and dP*/dgbar* at g on the walked stretches (0, 0 where none holds g).
+      subroutine law_at(stretches, g, p, dpdg)
+         type(stretch_type), intent(in) :: stretches(:)
+         real(wp), intent(in) :: g
+         real(wp), intent(out) :: p, dpdg
+         integer :: m, j, j_lo, j_hi
+         real(wp) :: lo, hi, g_lo, g_hi, s_at
+         type(state_type) :: st
+         p = 0.0_wp; dpdg = 0.0_wp
+         if (g == 0.0_wp) then                        ! full contact
+            p = ch%p(ch%n)
+            call slope(ch%n - 1, real(ch%n - 1, wp), dpdg)
+            return
+         end if
+         do m = 1, size(stretches)
+            lo = min(stretches(m)%s1, stretches(m)%s2)
+            hi = max(stretches(m)%s1, stretches(m)%s2)
+            if (hi <= lo) cycle
+            j_lo = min(int(lo), ch%n - 2) + 1
+            j_hi = min(int(hi - 1.0e-12_wp), ch%n - 2) + 1
+            do j = j_lo, j_hi
+               call g_at(max(lo, real(j - 1, wp)), g_lo)
+               if (status /= wa_ok) return
+               call g_at(min(hi, real(j, wp)), g_hi)
+               if (status /= wa_ok) return
+               if (g < min(g_lo, g_hi) .or. g > max(g_lo, g_hi)) cycle
+               if (g == ch%g(j)) then
+                  s_at = real(j - 1, wp)
+               else if (g == ch%g(j + 1)) then
+                  s_at = real(j, wp)
+               else
+                  call solve_gbar(model, params, ch, j, g, s_at, status, errmsg)
+                  if (status /= wa_ok) return
+               end if
+               call state_at_s(s_at, st)
+               if (status /= wa_ok) return
+               p = st%p_star
+               call slope(j, s_at, dpdg)
+               return
+            end do
+         end do
+      end subroutine law_at
+
+      subroutine g_at(s_pos, g)
+         real(wp), intent(in) :: s_pos
+         real(wp), intent(out) :: g
+         type(state_type) :: st
+         call state_at_s(s_pos, st)
+         g = st%gbar
+      end subroutine g_at
+
+      subroutine state_at_s(s_pos, st)
+         real(wp), intent(in) :: s_pos
+         type(state_type), intent(out) :: st
+         integer :: i
+         real(wp) :: t
+         status = wa_ok
+         i = min(int(s_pos), ch%n - 2) + 1
+         t = s_pos - real(i - 1, wp)
+         if (t <= 0.0_wp) then
+            st = chain_state(ch, i)
+         else if (t >= 1.0_wp) then
+            st = chain_state(ch, i + 1)
+         else
+            call state_at_param(model, params, ch, i, param(ch, i, t), st, status, errmsg)
+         end if
+      end subroutine state_at_s
+
+      !> dP*/dgbar* by second-order differences in the parameter of chain interval j
+      !> (central, or one-sided at the interval's ends).
+      subroutine slope(j, s_pos, dpdg)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: s_pos
+         real(wp), intent(out) :: dpdg
+         real(wp), parameter :: h = 1.0e-5_wp
+         real(wp) :: t, tt(3), w(3), dp, dg
+         type(state_type) :: sk
+         integer :: k
+         dpdg = 0.0_wp
+         if (param_kind(ch, j) == 2) return             ! P* = -Sigma0 on the stretch
+         t = s_pos - real(j - 1, wp)
+         if (t - h < 0.0_wp) then
+            tt = [t, t + h, t + 2.0_wp*h]; w = [-1.5_wp, 2.0_wp, -0.5_wp]
+         else if (t + h > 1.0_wp) then
+            tt = [t, t - h, t - 2.0_wp*h]; w = [1.5_wp, -2.0_wp, 0.5_wp]
+         else
+            tt = [t - h, t, t + h]; w = [-0.5_wp, 0.0_wp, 0.5_wp]
+         end if
+         dp = 0.0_wp; dg = 0.0_wp
+         do k = 1, 3
+            if (w(k) == 0.0_wp) cycle
+            call state_at_param(model, params, ch, j, param(ch, j, tt(k)), sk, status, errmsg)
+            if (status /= wa_ok) return
+            dp = dp + w(k)*sk%p_star
+            dg = dg + w(k)*sk%gbar
+         end do
+         if (dg /= 0.0_wp) dpdg = dp/dg
+      end subroutine slope
+   end subroutine gap_law
+
    ! ------------------------------------------------------------------ chain
 
    !> Join the branch pieces end to start (MD: the no-contact piece from the first
@@ -142,6 +295,7 @@ contains
       integer, allocatable :: first(:), last(:)
       logical, allocatable :: used(:)
       integer :: i, k, n_pieces, cur, next
+      real(wp) :: d_best, dc, dp
       type(state_type) :: s
 
       status = wa_ok
@@ -177,13 +331,25 @@ contains
                branch%gbar(i), branch%zone_case(i), branch%event(i))
          end do
          if (branch%a_star(last(cur)) >= 0.5_wp - 1.0e-8_wp) exit
+         ! the piece starting nearest the end of this one (a joint at a* -> 0 matches
+         ! to within what a_start = 1e-6 moves c* and P*: relative 5 %)
          next = 0
+         d_best = huge(1.0_wp)
          do i = 1, n_pieces
             if (used(i)) cycle
-            if (abs(branch%c_star(first(i)) - branch%c_star(last(cur))) < 1.0e-6_wp .and. &
-               abs(branch%p_star(first(i)) - branch%p_star(last(cur))) < 1.0e-6_wp) then
+            dc = abs(branch%c_star(first(i)) - branch%c_star(last(cur)))
+            dp = abs(branch%p_star(first(i)) - branch%p_star(last(cur)))
+            if (branch%zone_case(last(cur)) == zone_no_contact) then
+               ! a closed crest joins the contact curve's a* -> 0 end (at large mu c* there
+               ! can be below a_start: nearest c* among the contact pieces)
+               if (branch%zone_case(first(i)) == zone_no_contact) cycle
+            else if (dc > 0.05_wp*branch%c_star(last(cur)) + 1.0e-6_wp .or. &
+               dp > 0.05_wp*abs(branch%p_star(last(cur))) + 1.0e-6_wp) then
+               cycle
+            end if
+            if (dc + dp < d_best) then
+               d_best = dc + dp
                next = i
-               exit
             end if
          end do
          if (next == 0) then

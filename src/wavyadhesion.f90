@@ -24,14 +24,14 @@ module wavyadhesion
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
-   use wa_gappath, only: gap_path_type, gap_path, gap_stage_approach, gap_stage_retraction, &
+   use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost
    implicit none
    private
 
    public :: wp
-   public :: gap_path_type, gap_path, gap_stage_approach, gap_stage_retraction, &
+   public :: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost
    public :: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
