@@ -51,6 +51,8 @@ program wavyadhesion_cli
       end if
    case ("critical")
       call run_critical(opts, params, rows_failed)
+   case ("gaplaw")
+      call run_gaplaw(opts, params)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
@@ -228,6 +230,29 @@ contains
             [path%a_star(i), path%c_star(i), path%p_star(i), path%gbar(i)])
       end do
    end subroutine run_gap_path
+
+   !> gaplaw: P* on approach and retraction and their slopes on a uniform gbar* grid.
+   subroutine run_gaplaw(opts, params)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      real(wp), allocatable :: pa(:), pr(:), da(:), dr(:)
+      character(len=256) :: msg
+      integer :: i, n, status
+
+      n = size(opts%gbar)
+      allocate (pa(n), pr(n), da(n), dr(n))
+      msg = ""
+      call gap_law(opts%model, params, opts%gbar, pa, pr, da, dr, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(out, opts%format, "gap law: P* against the mean gap gbar* (gap control)", &
+         model_name(opts%model), params, "gbar P_approach P_retract dPdg_approach dPdg_retract", &
+         [character(len=80) :: "P_approach: after approaching from far apart; P_retract: after", &
+         "retracting from full contact (doc/user-guide.md, hysteresis convention);", &
+         "P* = 0 and slope 0 where the surfaces do not interact"])
+      do i = 1, n
+         call write_row(out, opts%format, [opts%gbar(i), pa(i), pr(i), da(i), dr(i)])
+      end do
+   end subroutine run_gaplaw
 
    !> critical: P_fc and P_pf over alpha x mu. A failing (alpha, mu) never loses the
    !> table: its row is written with NaN forces, standard error names it and its reason,
@@ -416,7 +441,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(36) = [character(len=100) :: &
+      character(len=100), parameter :: text(39) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -430,6 +455,8 @@ contains
          "  path      loading and unloading under load control: jumps, full contact,", &
          "            pull-off; --control gap: approach and retraction under mean-gap", &
          "            control (jumps, contact made/lost, energy lost per cycle W*)", &
+         "  gaplaw    P* on approach and retraction and dP*/dgbar* on a uniform grid of", &
+         "            mean gaps: --gbar-range LO:HI:N", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
          "            --mu-range LO:HI:N[:log]", &
          "", &
@@ -441,6 +468,7 @@ contains
          "                     N values of mu from LO to HI (critical only; not with --mu)", &
          "  --a-star X[,X...]  contact half-widths over the period, in [0, 1/2] (point)", &
          "  --control C        load (default) | gap (path)", &
+         "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &
          "                     replaced only once the whole table is written", &

@@ -19,6 +19,8 @@ module wa_cli_options
       character(len=:), allocatable :: command
       integer :: model = model_dw
       real(wp), allocatable :: alpha(:), mu(:), a_star(:)
+      !> gaplaw: the mean gaps (--gbar-range LO:HI:N)
+      real(wp), allocatable :: gbar(:)
       character(len=:), allocatable :: format, output
       !> path: "load" (default) or "gap" (mean-gap control)
       character(len=:), allocatable :: control
@@ -49,9 +51,10 @@ contains
          end if
       end if
       select case (opts%command)
-      case ("point", "branch", "path", "critical")
+      case ("point", "branch", "path", "critical", "gaplaw")
       case default
-         error = "unknown subcommand '"//opts%command//"' (expected point, branch, path or critical)"
+         error = "unknown subcommand '"//opts%command//"' (expected point, branch, path, "// &
+            "critical or gaplaw)"
          return
       end select
       do while (i <= n)
@@ -107,6 +110,10 @@ contains
          error = "--mu-range is only for the critical subcommand"
       else if (given(opts, "--a-star") .and. opts%command /= "point") then
          error = "--a-star is only for the point subcommand"
+      else if (given(opts, "--gbar-range") .and. opts%command /= "gaplaw") then
+         error = "--gbar-range is only for the gaplaw subcommand"
+      else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then
+         error = "gaplaw needs --gbar-range LO:HI:N"
       else if (given(opts, "--control") .and. opts%command /= "path") then
          error = "--control is only for the path subcommand"
       end if
@@ -165,6 +172,9 @@ contains
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
+      case ("--gbar-range")
+         call parse_mu_range(val, opts%gbar, error)
+         if (allocated(error)) error = "--gbar-range"//error(len("--mu-range") + 1:)
       case ("--control")
          if (val /= "load" .and. val /= "gap") then
             error = "--control: '"//val//"' is not one of load, gap"

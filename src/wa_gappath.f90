@@ -9,7 +9,7 @@
 !> the parity of the number of gbar* extrema between a state and full contact.
 module wa_gappath
    use wa_kinds, only: wp, pi
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_negative_inf
    use wa_status, only: wa_ok, wa_numerical_error, wa_invalid_argument, set_error
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
@@ -131,7 +131,8 @@ contains
 
    !> The gap law: P* on approach and on retraction at each mean gap gbar(k) >= 0, and
    !> the slopes dP*/dgbar* (P* = 0 and slope 0 where the surfaces do not interact; at
-   !> gbar* = 0, full contact, P* at a* -> 1/2 and the slope on the stable stretch).
+   !> gbar* = 0, full contact, P* at a* -> 1/2 and slope -Infinity: dP*/dgbar* ~ -1/(1/2 - a*)^2
+   !> there). Slopes by second-order differences in the curve's parameter (~1e-9).
    subroutine gap_law(model, params, gbar, p_approach, p_retract, dpdg_approach, &
       dpdg_retract, status, errmsg)
       integer, intent(in) :: model
@@ -190,9 +191,9 @@ contains
          real(wp) :: lo, hi, g_lo, g_hi, s_at
          type(state_type) :: st
          p = 0.0_wp; dpdg = 0.0_wp
-         if (g == 0.0_wp) then                        ! full contact
+         if (g == 0.0_wp) then                        ! full contact: P* ~ P_end - sqrt(2 g)
             p = ch%p(ch%n)
-            call slope(ch%n - 1, real(ch%n - 1, wp), dpdg)
+            dpdg = ieee_value(dpdg, ieee_negative_inf)
             return
          end if
          do m = 1, size(stretches)
@@ -272,8 +273,15 @@ contains
          dp = 0.0_wp; dg = 0.0_wp
          do k = 1, 3
             if (w(k) == 0.0_wp) cycle
-            call state_at_param(model, params, ch, j, param(ch, j, tt(k)), sk, status, errmsg)
-            if (status /= wa_ok) return
+            if (tt(k) <= 0.0_wp) then
+               sk = chain_state(ch, j)
+            else if (tt(k) >= 1.0_wp) then
+               sk = chain_state(ch, j + 1)
+            else
+               call state_at_param(model, params, ch, j, param(ch, j, tt(k)), sk, status, &
+                  errmsg)
+               if (status /= wa_ok) return
+            end if
             dp = dp + w(k)*sk%p_star
             dg = dg + w(k)*sk%gbar
          end do

@@ -441,3 +441,40 @@ def test_control_usage_errors(cli, args, needle):
     assert res.returncode == 2
     assert needle in res.stderr
     assert res.stdout == ""
+
+
+def test_gaplaw_table(cli):
+    res = run(cli, "gaplaw", "--model", "md", "--alpha", "0.3", "--mu", "1",
+              "--gbar-range", "0:1.5:31", "--format", "csv")
+    table = rows(res.stdout)
+    assert len(table) == 31
+    assert list(table[0].keys()) == ["gbar", "P_approach", "P_retract", "dPdg_approach",
+                                     "dPdg_retract"]
+    assert table[0]["dPdg_approach"] == "-Infinity"          # full contact
+    last = table[-1]                                           # beyond the interaction
+    assert float(last["P_approach"]) == 0.0 and float(last["P_retract"]) == 0.0
+    # retraction is at least as tensile as approach (W* >= 0), and differs inside loops
+    diffs = [float(r["P_approach"]) - float(r["P_retract"]) for r in table]
+    assert min(diffs) >= -1e-12 and max(diffs) > 1e-3
+
+
+def test_gaplaw_westergaard_approach_curve(cli):
+    res = run(cli, "gaplaw", "--model", "westergaard", "--gbar-range", "0.05:0.95:10",
+              "--format", "csv")
+    for r in rows(res.stdout):
+        g, p = float(r["gbar"]), float(r["P_approach"])
+        assert 1 - p + p * math.log(p) == pytest.approx(g, abs=1e-13)
+        assert r["P_approach"] == r["P_retract"]
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["gaplaw", "--model", "dw"], "--gbar-range"),
+    (["gaplaw", "--gbar-range", "1:0:3"], "--gbar-range"),
+    (["gaplaw", "--gbar-range", "0:1:x"], "--gbar-range"),
+    (["point", "--a-star", "0.1", "--gbar-range", "0:1:3"], "--gbar-range"),
+])
+def test_gaplaw_usage_errors(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
+    assert needle in res.stderr
+    assert res.stdout == ""

@@ -23,7 +23,10 @@ contains
          new_unittest("jumps_at_gbar_extrema", test_jumps), &
          new_unittest("md_event_sequence", test_md_events), &
          new_unittest("dw_quadrature_converged", test_dw_quadrature), &
-         new_unittest("md_quadrature_converged", test_md_quadrature)]
+         new_unittest("md_quadrature_converged", test_md_quadrature), &
+         new_unittest("westergaard_gap_law", test_westergaard_law), &
+         new_unittest("gap_law_loop_is_the_energy", test_law_energy), &
+         new_unittest("gap_law_bad_input", test_law_bad_input)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -192,5 +195,67 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_md_quadrature
+
+   !> gap_law for Westergaard: approach = retraction, gbar* = 1 - P* + P* ln P*, and
+   !> dP*/dgbar* = 1/ln P*.
+   subroutine test_westergaard_law(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      integer, parameter :: n = 41
+      real(wp) :: g(n), pa(n), pr(n), da(n), dr(n), p
+      integer :: status, k
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      g = [(1.2_wp*real(k - 1, wp)/real(n - 1, wp), k = 1, n)]
+      call gap_law(model_westergaard, params, g, pa, pr, da, dr, status)
+      call check(error, status == wa_ok, "gap_law failed")
+      if (allocated(error)) return
+      call check(error, all(pa == pr) .and. all(da == dr), "no hysteresis")
+      if (allocated(error)) return
+      do k = 2, n
+         p = pa(k)
+         if (g(k) >= 1.0_wp) then
+            call check(error, p == 0.0_wp .and. da(k) == 0.0_wp, "apart beyond gbar* = 1")
+         else
+            call check(error, abs(1.0_wp - p + p*log(p) - g(k)) <= 1.0e-13_wp, &
+               "gbar* = 1 - P* + P* ln P*")
+            if (allocated(error)) return
+            call check(error, abs(da(k)*log(p) - 1.0_wp) <= 1.0e-7_wp, "dP*/dgbar* = 1/ln P*")
+         end if
+         if (allocated(error)) return
+      end do
+   end subroutine test_westergaard_law
+
+   !> W* = int (P_approach - P_retract) dgbar* from the gap law on a fine grid (the
+   !> trapezoid rule across the jumps: error ~h dP/2 per jump, 1.1e-3 here) against W*.
+   subroutine test_law_energy(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(gap_path_type) :: path
+      integer, parameter :: n = 4001
+      real(wp) :: g(n), pa(n), pr(n), da(n), dr(n), w, h
+      integer :: status, k
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call gap_path(model_dw, params, path, status)
+      h = 1.3_wp/real(n - 1, wp)
+      g = [(h*real(k - 1, wp), k = 1, n)]
+      call gap_law(model_dw, params, g, pa, pr, da, dr, status)
+      call check(error, status == wa_ok, "gap_law failed")
+      if (allocated(error)) return
+      w = h*(sum(pa - pr) - 0.5_wp*(pa(1) - pr(1) + pa(n) - pr(n)))
+      call check_close(error, w, path%w_star, 5.0e-3_wp, what="W* from the gap law (DW)")
+   end subroutine test_law_energy
+
+   subroutine test_law_bad_input(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      real(wp) :: pa(2), pr(2), da(2), dr(2)
+      integer :: status
+      character(len=200) :: msg
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      msg = ""
+      call gap_law(model_dw, params, [0.5_wp, -0.1_wp], pa, pr, da, dr, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "gbar") > 0, &
+         "negative gbar rejected")
+   end subroutine test_law_bad_input
 
 end module test_gappath
