@@ -803,7 +803,11 @@ contains
       end if
 if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
          ! graded panels towards the parameter's zero (a* -> 0 or c* -> 0)
+         ! halving until the panel next to the end is as narrow as the end's distance
+         ! from 0 (at most 60 halvings)
          n_panels = 60
+         if (min(x0, x1) > 0.0_wp) n_panels = min(60, 2 + &
+            ceiling(log(abs(x1 - x0)/min(x0, x1))/log(2.0_wp)))
          do k = 1, n_panels
             if (x0 < x1) then
                y0 = x0 + (x1 - x0)*0.5_wp**(n_panels - k + 1); y1 = x0 + (x1 - x0)*0.5_wp**(n_panels - k)
