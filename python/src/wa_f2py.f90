@@ -572,3 +572,58 @@ subroutine fa_critical_sweep(n, model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_m
    end if
    status = int(stat, c_int)
 end subroutine fa_critical_sweep
+
+!> Gap control: P* on approach and retraction and dP*/dgbar* at n mean gaps (gap_law),
+!> and the energy lost per cycle W* and W*/(pi alpha^2/2) (gap_path). On failure the
+!> arrays and W* are NaN.
+subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_approach, &
+      dpdg_retract, w_star, w_fraction, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_gappath, only: gap_path_type, gap_path, gap_law
+   implicit none
+   !> Number of mean gaps, >= 1
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Mean gaps gbar* >= 0
+   real(c_double), intent(in) :: gbar(n)
+   !> P* on approach and on retraction
+   real(c_double), intent(out) :: p_approach(n), p_retract(n)
+   !> dP*/dgbar* on approach and on retraction
+   real(c_double), intent(out) :: dpdg_approach(n), dpdg_retract(n)
+   !> Energy lost per cycle and its fraction of the work of adhesion
+   real(c_double), intent(out) :: w_star, w_fraction
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(gap_path_type) :: path
+   integer :: stat
+
+   message = ""
+   w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star
+   p_approach = w_star; p_retract = w_star; dpdg_approach = w_star; dpdg_retract = w_star
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call gap_law(int(model), params, gbar, p_approach, p_retract, &
+      dpdg_approach, dpdg_retract, stat, message)
+   if (stat == wa_ok) call gap_path(int(model), params, path, stat, message)
+   if (stat == wa_ok) then
+      w_star = path%w_star
+      w_fraction = path%w_fraction
+   else
+      w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star
+      p_approach = w_star; p_retract = w_star; dpdg_approach = w_star; dpdg_retract = w_star
+   end if
+   status = int(stat, c_int)
+end subroutine fa_gap_law
