@@ -43,13 +43,22 @@ program wavyadhesion_cli
    case ("branch")
       call run_branch(opts, params)
    case ("path")
-      call run_path(opts, params)
+      if (allocated(opts%control)) then
+         if (opts%control == "gap") call run_gap_path(opts, params)
+      end if
+      if (.not. allocated(opts%control)) then
+         call run_path(opts, params)
+      else if (opts%control == "load") then
+         call run_path(opts, params)
+      end if
    case ("critical")
       call run_critical(opts, params, rows_failed)
    case ("map")
       call run_map(opts)
    case ("profile")
       call run_profile(opts, params)
+   case ("gaplaw")
+      call run_gaplaw(opts, params)
    case default
       call usage_error("'"//opts%command//"' is not available in this version yet")
    end select
@@ -269,6 +278,55 @@ contains
             [path%a_star(i), path%c_star(i), path%p_star(i)])
       end do
    end subroutine run_path
+
+   !> path --control gap: approach and retraction under mean-gap control.
+   subroutine run_gap_path(opts, params)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      type(gap_path_type) :: path
+      character(len=256) :: msg
+      integer :: i, status
+
+      msg = ""
+      call gap_path(opts%model, params, path, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(out, opts%format, "gap-controlled approach and retraction", &
+         model_name(opts%model), params, "stage event a_star c_star P_star gbar", &
+         [character(len=80) :: "stage: 1 approach (gbar* falling), 2 retraction (rising)", &
+         "event: 3 jump start, 4 jump end (at constant gbar*), 5 full contact reached,", &
+         "       6 full contact left, 10 first interaction (touch), 11 contact made,", &
+         "       12 contact lost, 13 interaction lost (P* = 0 beyond)", &
+         "energy lost per cycle W* = -oint P* dgbar* (units p* Delta):", &
+         "W* = "//format_real(path%w_star)//"  W*/(pi alpha^2/2) = "// &
+         format_real(path%w_fraction)])
+      do i = 1, path%n
+         call write_row_ints_first(out, opts%format, [path%stage(i), path%event(i)], &
+            [path%a_star(i), path%c_star(i), path%p_star(i), path%gbar(i)])
+      end do
+   end subroutine run_gap_path
+
+   !> gaplaw: P* on approach and retraction and their slopes on a uniform gbar* grid.
+   subroutine run_gaplaw(opts, params)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: params
+      real(wp), allocatable :: pa(:), pr(:), da(:), dr(:)
+      character(len=256) :: msg
+      integer :: i, n, status
+
+      n = size(opts%gbar)
+      allocate (pa(n), pr(n), da(n), dr(n))
+      msg = ""
+      call gap_law(opts%model, params, opts%gbar, pa, pr, da, dr, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call write_header(out, opts%format, "gap law: P* against the mean gap gbar* (gap control)", &
+         model_name(opts%model), params, "gbar P_approach P_retract dPdg_approach dPdg_retract", &
+         [character(len=80) :: "P_approach: after approaching from far apart; P_retract: after", &
+         "retracting from full contact (doc/user-guide.md, hysteresis convention);", &
+         "P* = 0 and slope 0 where the surfaces do not interact"])
+      do i = 1, n
+         call write_row(out, opts%format, [opts%gbar(i), pa(i), pr(i), da(i), dr(i)])
+      end do
+   end subroutine run_gaplaw
 
    !> critical: P_fc and P_pf over alpha x mu. A failing (alpha, mu) never loses the
    !> table: its row is written with NaN forces, standard error names it and its reason,
@@ -524,7 +582,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(45) = [character(len=100) :: &
+      character(len=100), parameter :: text(50) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -538,7 +596,10 @@ contains
          "  profile   traction and gap of one state over x* in [-1/2, 1/2]: --a-star X", &
          "            [--c-star C] (default: the principal state) [--n N] (default 201)", &
          "  path      loading and unloading under load control: jumps, full contact,", &
-         "            pull-off", &
+         "            pull-off; --control gap: approach and retraction under mean-gap", &
+         "            control (jumps, contact made/lost, energy lost per cycle W*)", &
+         "  gaplaw    P* on approach and retraction and dP*/dgbar* on a uniform grid of", &
+         "            mean gaps: --gbar-range LO:HI:N", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
          "            --mu-range LO:HI:N[:log]", &
          "  map       adhesion map (dw, md): boundaries between mechanisms as rows", &
@@ -558,6 +619,8 @@ contains
          "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
          "                     Dugdale zone half-width of a state without contact)", &
          "  --n N              profile: number of points, in [2, 100000] (default 201)", &
+         "  --control C        load (default) | gap (path)", &
+         "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &
          "                     replaced only once the whole table is written", &

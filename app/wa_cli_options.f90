@@ -22,7 +22,11 @@ module wa_cli_options
       !> profile: the state's c* (not allocated: the principal state) and the points
       real(wp), allocatable :: c_star(:)
       integer :: n_points = 201
+      !> gaplaw: the mean gaps (--gbar-range LO:HI:N)
+      real(wp), allocatable :: gbar(:)
       character(len=:), allocatable :: format, output
+      !> path: "load" (default) or "gap" (mean-gap control)
+      character(len=:), allocatable :: control
       logical :: help = .false., version = .false.
       !> SI inputs (NaN when not given)
       real(wp) :: e1, nu1, e2, nu2, estar, period, amplitude, work, peak
@@ -50,10 +54,10 @@ contains
          end if
       end if
       select case (opts%command)
-      case ("point", "branch", "path", "critical", "map", "profile")
+      case ("point", "branch", "path", "critical", "map", "profile", "gaplaw")
       case default
          error = "unknown subcommand '"//opts%command//"' (expected point, branch, path, "// &
-            "critical, map or profile)"
+            "critical, map, profile or gaplaw)"
          return
       end select
       do while (i <= n)
@@ -120,6 +124,12 @@ contains
       else if ((given(opts, "--c-star") .or. given(opts, "--n")) .and. &
             opts%command /= "profile") then
          error = "--c-star and --n are only for the profile subcommand"
+      else if (given(opts, "--gbar-range") .and. opts%command /= "gaplaw") then
+         error = "--gbar-range is only for the gaplaw subcommand"
+      else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then
+         error = "gaplaw needs --gbar-range LO:HI:N"
+      else if (given(opts, "--control") .and. opts%command /= "path") then
+         error = "--control is only for the path subcommand"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
@@ -179,6 +189,15 @@ contains
       case ("--n"); call parse_count(val, opts%n_points, error)
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
       case ("--alpha-range"); call parse_mu_range(val, opts%alpha, error, "--alpha-range")
+      case ("--gbar-range")
+         call parse_mu_range(val, opts%gbar, error)
+         if (allocated(error)) error = "--gbar-range"//error(len("--mu-range") + 1:)
+      case ("--control")
+         if (val /= "load" .and. val /= "gap") then
+            error = "--control: '"//val//"' is not one of load, gap"
+         else
+            opts%control = val
+         end if
       case ("--format")
          if (val /= "table" .and. val /= "csv") then
             error = "--format: '"//val//"' is not one of table, csv"

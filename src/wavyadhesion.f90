@@ -27,10 +27,16 @@ module wavyadhesion
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
    use wa_map, only: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
       map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+   use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
+      gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
+      gap_event_interaction_lost
    implicit none
    private
 
    public :: wp
+   public :: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
+      gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
+      gap_event_interaction_lost
    public :: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
    public :: params_type, scales_type, new_params, dimensional_params, reduced_modulus

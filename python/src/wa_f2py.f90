@@ -674,6 +674,11 @@ end subroutine fa_adhesion_map
 !> traction = gap = NaN.
 subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, traction, gap, &
       state_c, state_p, state_zone, state_gbar, status, message)
+!> Gap control: P* on approach and retraction and dP*/dgbar* at n mean gaps (gap_law),
+!> and the energy lost per cycle W* and W*/(pi alpha^2/2) (gap_path). On failure the
+!> arrays and W* are NaN.
+subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_approach, &
+      dpdg_retract, w_star, w_fraction, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok
@@ -682,6 +687,10 @@ subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, tr
    use wa_models, only: check_model, model_profile
    implicit none
    !> Number of points
+   use wa_models, only: check_model
+   use wa_gappath, only: gap_path_type, gap_path, gap_law
+   implicit none
+   !> Number of mean gaps, >= 1
    integer(c_int), intent(in) :: n
    !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
    integer(c_int), intent(in) :: model
@@ -704,6 +713,14 @@ subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, tr
    !> c*, P*, zone case and gbar* of the state
    real(c_double), intent(out) :: state_c, state_p, state_gbar
    integer(c_int), intent(out) :: state_zone
+   !> Mean gaps gbar* >= 0
+   real(c_double), intent(in) :: gbar(n)
+   !> P* on approach and on retraction
+   real(c_double), intent(out) :: p_approach(n), p_retract(n)
+   !> dP*/dgbar* on approach and on retraction
+   real(c_double), intent(out) :: dpdg_approach(n), dpdg_retract(n)
+   !> Energy lost per cycle and its fraction of the work of adhesion
+   real(c_double), intent(out) :: w_star, w_fraction
    !> wa_ok or the failure's status
    integer(c_int), intent(out) :: status
    !> The failure's message
@@ -738,3 +755,23 @@ subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, tr
    end if
    status = int(stat, c_int)
 end subroutine fa_profile
+   type(gap_path_type) :: path
+   integer :: stat
+
+   message = ""
+   w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star
+   p_approach = w_star; p_retract = w_star; dpdg_approach = w_star; dpdg_retract = w_star
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call gap_law(int(model), params, gbar, p_approach, p_retract, &
+      dpdg_approach, dpdg_retract, stat, message)
+   if (stat == wa_ok) call gap_path(int(model), params, path, stat, message)
+   if (stat == wa_ok) then
+      w_star = path%w_star
+      w_fraction = path%w_fraction
+   else
+      w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star
+      p_approach = w_star; p_retract = w_star; dpdg_approach = w_star; dpdg_retract = w_star
+   end if
+   status = int(stat, c_int)
+end subroutine fa_gap_law

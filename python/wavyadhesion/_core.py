@@ -43,6 +43,8 @@ __all__ = [
     "critical_forces",
     "Profile",
     "profile",
+    "GapLaw",
+    "gap_law",
 ]
 
 #: Model names and the library's integer constants (include/wavyadhesion.h).
@@ -1279,3 +1281,67 @@ class Params:
 
 # GSL must return error codes, not abort() the Python process.
 _f.fa_init()
+
+
+class GapLaw(NamedTuple):
+    """P* against the mean gap under gap control (doc/user-guide.md, "Gap control")."""
+    gbar: np.ndarray
+    #: P* after approaching from far apart
+    P_approach: np.ndarray
+    #: P* after retracting from full contact
+    P_retract: np.ndarray
+    #: dP*/dgbar* on approach (-inf at gbar* = 0, 0 where the surfaces do not interact)
+    dPdg_approach: np.ndarray
+    #: dP*/dgbar* on retraction
+    dPdg_retract: np.ndarray
+    #: Energy lost per cycle W* = -oint P* dgbar* (units p* Delta per unit area)
+    W_star: float
+    #: W*/(pi alpha^2/2), the fraction of the work of adhesion lost per cycle
+    W_fraction: float
+
+
+def gap_law(model, alpha, mu, gbar) -> GapLaw:
+    """The gap law: P* on approach and on retraction, and their slopes dP*/dgbar*, at
+    the mean gaps ``gbar`` (>= 0), with the energy lost per cycle W*.
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha, mu : float
+        Johnson's parameter (> 0) and the transition parameter (>= 0).
+    gbar : float or array_like
+        Mean gaps gbar* = mean gap / Delta, each finite and >= 0.
+
+    Returns
+    -------
+    GapLaw
+        Arrays of the shape of ``gbar`` and the floats ``W_star``, ``W_fraction``.
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model, or alpha, mu or a gbar outside its range.
+    ConvergenceError
+        The continuation or a point solve failed.
+
+    Examples
+    --------
+    >>> law = gap_law("westergaard", 0.3, 1.0, [0.25, 2.0])
+    >>> float(law.P_approach[1]), law.W_star
+    (0.0, 0.0)
+    """
+    code = _model_code(model)
+    alpha = _scalar(alpha, "alpha")
+    mu = _scalar(mu, "mu")
+    g = _float_array(gbar, "gbar")
+    shape = g.shape
+    flat = np.ascontiguousarray(g.reshape(-1))
+    if flat.size == 0:
+        raise InvalidArgumentError("gbar is empty: give at least one mean gap",
+                                   _INVALID_ARGUMENT)
+    pa, pr, da, dr, w, wf, status, message = _f.fa_gap_law(code, alpha, mu, flat)
+    if status != _OK:
+        _raise(status, message)
+    return GapLaw(g.copy(), pa.reshape(shape), pr.reshape(shape), da.reshape(shape),
+                  dr.reshape(shape), float(w), float(wf))

@@ -504,5 +504,81 @@ def test_profile_options(cli):
 def test_profile_errors(cli, args, code, needle):
     res = run(cli, *args, check=False)
     assert res.returncode == code, res.stderr
+
+
+def test_path_control_gap_md_events_and_energy(cli):
+    # issue 11: approach and retraction under mean-gap control, with W* in the header
+    res = run(cli, "path", "--control", "gap", "--model", "md", "--alpha", "0.3", "--mu", "1",
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == ["stage", "event", "a_star", "c_star", "P_star", "gbar"]
+    events = [(int(r["stage"]), int(r["event"])) for r in table]
+    assert events == [(1, 10), (1, 3), (1, 4), (1, 11), (1, 3), (1, 4), (1, 5),
+                      (2, 6), (2, 3), (2, 4), (2, 12), (2, 3), (2, 4), (2, 13)]
+    for start, end in zip(table, table[1:]):
+        if start["event"] == "3":          # a jump keeps the mean gap
+            assert end["event"] == "4"
+            assert float(end["gbar"]) == pytest.approx(float(start["gbar"]), abs=1e-12)
+    header = run(cli, "path", "--control", "gap", "--model", "md", "--alpha", "0.3",
+                 "--mu", "1").stdout
+    w_line = [line for line in header.splitlines() if line.startswith("# W* = ")]
+    assert len(w_line) == 1
+    w_star = float(w_line[0].split()[3])
+    assert 0.0 < w_star < 0.01
+
+
+def test_path_control_gap_westergaard_has_no_hysteresis(cli):
+    res = run(cli, "path", "--control", "gap", "--model", "westergaard")
+    assert "# W* = 0.0000000000000000E+000" in res.stdout
+
+
+def test_path_control_load_is_the_default(cli):
+    assert run(cli, "path", "--control", "load").stdout == run(cli, "path").stdout
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["path", "--control", "force"], "--control"),
+    (["branch", "--control", "gap"], "--control"),
+])
+def test_control_usage_errors(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
+    assert needle in res.stderr
+    assert res.stdout == ""
+
+
+def test_gaplaw_table(cli):
+    res = run(cli, "gaplaw", "--model", "md", "--alpha", "0.3", "--mu", "1",
+              "--gbar-range", "0:1.5:31", "--format", "csv")
+    table = rows(res.stdout)
+    assert len(table) == 31
+    assert list(table[0].keys()) == ["gbar", "P_approach", "P_retract", "dPdg_approach",
+                                     "dPdg_retract"]
+    assert table[0]["dPdg_approach"] == "-Infinity"          # full contact
+    last = table[-1]                                           # beyond the interaction
+    assert float(last["P_approach"]) == 0.0 and float(last["P_retract"]) == 0.0
+    # retraction is at least as tensile as approach (W* >= 0), and differs inside loops
+    diffs = [float(r["P_approach"]) - float(r["P_retract"]) for r in table]
+    assert min(diffs) >= -1e-12 and max(diffs) > 1e-3
+
+
+def test_gaplaw_westergaard_approach_curve(cli):
+    res = run(cli, "gaplaw", "--model", "westergaard", "--gbar-range", "0.05:0.95:10",
+              "--format", "csv")
+    for r in rows(res.stdout):
+        g, p = float(r["gbar"]), float(r["P_approach"])
+        assert 1 - p + p * math.log(p) == pytest.approx(g, abs=1e-13)
+        assert r["P_approach"] == r["P_retract"]
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["gaplaw", "--model", "dw"], "--gbar-range"),
+    (["gaplaw", "--gbar-range", "1:0:3"], "--gbar-range"),
+    (["gaplaw", "--gbar-range", "0:1:x"], "--gbar-range"),
+    (["point", "--a-star", "0.1", "--gbar-range", "0:1:3"], "--gbar-range"),
+])
+def test_gaplaw_usage_errors(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
     assert needle in res.stderr
     assert res.stdout == ""

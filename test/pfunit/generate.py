@@ -15,7 +15,7 @@ import re
 
 HERE = pathlib.Path(__file__).resolve().parent
 UNIT = HERE.parent / "unit"
-SUITES = ["params", "kernels", "elliptic", "dw", "md", "reference", "branch", "robustness", "sweep", "separation", "map"]
+SUITES = ["params", "kernels", "elliptic", "dw", "md", "reference", "branch", "robustness", "sweep", "separation", "map", "gappath"]
 COUNT_TEST = "all_tests_wrapped"
 IDENT = re.compile(r"[a-z][a-z0-9_]{0,62}$", re.IGNORECASE)
 

@@ -14,6 +14,7 @@ module unit_bridge
    use test_sweep, only: collect_sweep
    use test_separation, only: collect_separation
    use test_map, only: collect_map
+   use test_gappath, only: collect_gappath
    implicit none
    private
 
@@ -37,6 +38,7 @@ contains
       case ("sweep"); call collect_sweep(tests)
       case ("separation"); call collect_separation(tests)
       case ("map"); call collect_map(tests)
+      case ("gappath"); call collect_gappath(tests)
       case default; allocate (tests(0))
       end select
    end subroutine collect

@@ -13,6 +13,7 @@ program tester
    use test_robustness, only: collect_robustness
    use test_separation, only: collect_separation
    use test_map, only: collect_map
+   use test_gappath, only: collect_gappath
    implicit none
    type(unittest_type), allocatable :: tests(:)
    character(len=64) :: suite, only
@@ -54,6 +55,9 @@ program tester
    end if
    if (wanted("map")) then
       call collect_map(tests); call run_suite("map", tests, npass, nfail, only)
+   end if
+   if (wanted("gappath")) then
+      call collect_gappath(tests); call run_suite("gappath", tests, npass, nfail, only)
    end if
    if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"

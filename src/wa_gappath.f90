@@ -1,0 +1,1080 @@
+!> Gap-controlled (mean-gap) approach and retraction along a traced branch, and the
+!> energy lost per cycle W* = -oint P* dgbar* (doc/theory.md, "Gap control").
+!>
+!> The branch pieces are joined into one chain from the first interaction (MD: the
+!> no-contact family; other models: the a* -> 0 end of the contact curve) to full
+!> contact (a* = 1/2, gbar* = 0). Stability under gap control changes only where gbar*
+!> is extremal along the chain (smooth turns, located by golden sections with the point
+!> solver, and corners); the last stretch (to full contact) is stable, so stability is
+!> the parity of the number of gbar* extrema between a state and full contact.
+module wa_gappath
+   use wa_kinds, only: wp, pi
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_negative_inf
+   use wa_status, only: wa_ok, wa_numerical_error, wa_invalid_argument, set_error
+   use wa_params, only: params_type
+   use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
+      zone_full_contact, model_md, model_dw
+   use wa_models, only: model_roots, max_model_roots
+   use wa_separation, only: state_mean_gap, md_no_contact_state
+   use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
+   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end
+   implicit none
+   private
+
+   public :: gap_path_type, gap_path, gap_path_from_branch, gap_law
+   public :: gap_stage_approach, gap_stage_retraction
+   public :: gap_event_jump_start, gap_event_jump_end, gap_event_full_contact_reached, &
+      gap_event_full_contact_left, gap_event_touch, gap_event_contact_made, &
+      gap_event_contact_lost, gap_event_interaction_lost
+
+   integer, parameter :: gap_stage_approach = 1, gap_stage_retraction = 2
+   !> Event codes of a gap-controlled path (3-6 as in wa_branch)
+   integer, parameter :: gap_event_jump_start = 3, gap_event_jump_end = 4, &
+      gap_event_full_contact_reached = 5, gap_event_full_contact_left = 6, &
+      gap_event_touch = 10, gap_event_contact_made = 11, gap_event_contact_lost = 12, &
+      gap_event_interaction_lost = 13
+   integer, parameter :: max_events = 64, max_jumps = 15
+   !> Gauss-Legendre nodes per quadrature panel
+   integer, parameter :: n_gauss = 12
+   !> The a* -> 0 end of a contact curve that does not join a no-contact state
+   real(wp), parameter :: a_limit = 1.0e-15_wp
+
+   !> The events of one approach-retraction cycle under gap control, in order.
+   type :: gap_path_type
+      integer :: n = 0
+      integer :: stage(max_events) = 0, event(max_events) = 0, zone_case(max_events) = 0
+      real(wp) :: a_star(max_events) = 0.0_wp, c_star(max_events) = 0.0_wp, &
+         p_star(max_events) = 0.0_wp, gbar(max_events) = 0.0_wp
+      !> Energy lost per cycle W* = -oint P* dgbar* (units p* Delta) and W*/(pi alpha^2/2)
+      real(wp) :: w_star = 0.0_wp, w_fraction = 0.0_wp
+      !> gbar* where the surfaces first interact on approach (P* = 0 above it)
+      real(wp) :: g_touch = 1.0_wp
+   end type gap_path_type
+
+   !> The branch as one chain; positions on it are s = i + t (t in [0, 1] of the
+   !> parameter between points i and i+1: c* on no-contact stretches, else a*).
+   type :: chain_type
+      integer :: n = 0
+      real(wp), allocatable :: a(:), c(:), p(:), g(:)
+      !> curve variable y (wa_curve) of case-1 points of DW and MD, else 0
+      real(wp), allocatable :: y(:)
+      integer, allocatable :: zone(:), event(:)
+      integer :: model = 0
+      logical, allocatable :: extremum(:), stable_after(:)
+      !> true when the chain's first point is the end of the P* = 0 states (MD)
+      logical :: joined = .false.
+   end type chain_type
+
+   !> One walked stretch of the chain
+   type :: stretch_type
+      real(wp) :: s1 = 0.0_wp, s2 = 0.0_wp
+   end type stretch_type
+
+contains
+
+   !> Trace the branch, then follow approach and retraction under gap control.
+   subroutine gap_path(model, params, path, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(gap_path_type), intent(out) :: path
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type) :: branch
+      call trace_branch(model, params, branch, status, errmsg)
+      if (status /= wa_ok) return
+      call gap_path_from_branch(model, params, branch, path, status, errmsg)
+   end subroutine gap_path
+
+   !> Approach from far apart to full contact and retraction, on a traced branch.
+   subroutine gap_path_from_branch(model, params, branch, path, status, errmsg, nodes, splits)
+      integer, intent(in) :: model
+      !> Gauss-Legendre nodes per panel (default 12) and panels per chain interval
+      !> (default 1): for checking the quadrature of W*
+      integer, intent(in), optional :: nodes, splits
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(gap_path_type), intent(out) :: path
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(chain_type) :: ch
+      type(stretch_type) :: walked(2*max_jumps + 4)
+      integer :: n_walked, n_nodes, n_splits
+
+      call build_chain(model, params, branch, ch, status, errmsg)
+      if (status /= wa_ok) return
+      path%g_touch = 1.0_wp
+      if (ch%joined) path%g_touch = ch%g(1)
+      call locate_extrema(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
+      n_walked = 0
+      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      n_nodes = n_gauss
+      n_splits = 1
+      if (present(nodes)) n_nodes = max(2, min(nodes, 64))
+      if (present(splits)) n_splits = max(1, min(splits, 64))
+      call energy_lost(model, params, ch, walked(1:n_walked), n_nodes, n_splits, path%w_star, &
+         status, errmsg)
+      if (status /= wa_ok) return
+      if (path%w_star < 0.0_wp) then                 ! rounding only: the terms are O(1)
+         if (path%w_star < -1.0e-14_wp) then
+            call set_error(wa_numerical_error, "gap_path: negative energy lost per cycle "// &
+               "(the walk or the quadrature failed)", status, errmsg)
+            return
+         end if
+         path%w_star = 0.0_wp
+      end if
+      path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
+   end subroutine gap_path_from_branch
+
+   !> The gap law: P* on approach and on retraction at each mean gap gbar(k) >= 0, and
+   !> the slopes dP*/dgbar* (P* = 0 and slope 0 where the surfaces do not interact; at
+   !> gbar* = 0, full contact, P* at a* -> 1/2 and slope -Infinity: dP*/dgbar* ~ -1/(1/2 - a*)^2
+   !> there). Slopes by second-order differences in the curve's parameter (~1e-9).
+   subroutine gap_law(model, params, gbar, p_approach, p_retract, dpdg_approach, &
+      dpdg_retract, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: gbar(:)
+      real(wp), intent(out) :: p_approach(:), p_retract(:), dpdg_approach(:), dpdg_retract(:)
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type) :: branch
+      type(chain_type) :: ch
+      type(gap_path_type) :: path
+      type(stretch_type) :: walked(2*max_jumps + 4)
+      integer :: n_walked, n_approach, k
+
+      p_approach = 0.0_wp; p_retract = 0.0_wp; dpdg_approach = 0.0_wp; dpdg_retract = 0.0_wp
+      if (size(p_approach) /= size(gbar) .or. size(p_retract) /= size(gbar) .or. &
+         size(dpdg_approach) /= size(gbar) .or. size(dpdg_retract) /= size(gbar)) then
+         call set_error(wa_invalid_argument, "gap_law: the output arrays must have the "// &
+            "size of gbar", status, errmsg)
+         return
+      end if
+      do k = 1, size(gbar)
+         if (.not. (ieee_is_finite(gbar(k)) .and. gbar(k) >= 0.0_wp)) then
+            call set_error(wa_invalid_argument, "gbar: must be finite and >= 0 (the mean "// &
+               "gap over the wave amplitude)", status, errmsg)
+            return
+         end if
+      end do
+      call trace_branch(model, params, branch, status, errmsg)
+      if (status /= wa_ok) return
+      call build_chain(model, params, branch, ch, status, errmsg)
+      if (status /= wa_ok) return
+      path%g_touch = 1.0_wp
+      if (ch%joined) path%g_touch = ch%g(1)
+      call locate_extrema(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
+      n_walked = 0
+      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      n_approach = n_walked
+      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      do k = 1, size(gbar)
+         call law_at(walked(1:n_approach), gbar(k), p_approach(k), dpdg_approach(k))
+         if (status /= wa_ok) return
+         call law_at(walked(n_approach + 1:n_walked), gbar(k), p_retract(k), dpdg_retract(k))
+         if (status /= wa_ok) return
+      end do
+   contains
+      !> P* and dP*/dgbar* at g on the walked stretches (0, 0 where none holds g).
+      subroutine law_at(stretches, g, p, dpdg)
+         type(stretch_type), intent(in) :: stretches(:)
+         real(wp), intent(in) :: g
+         real(wp), intent(out) :: p, dpdg
+         integer :: m, j, j_lo, j_hi
+         real(wp) :: lo, hi, g_lo, g_hi, s_at
+         type(state_type) :: st
+         p = 0.0_wp; dpdg = 0.0_wp
+         if (g == 0.0_wp) then                        ! full contact: P* ~ P_end - sqrt(2 g)
+            p = ch%p(ch%n)
+            dpdg = ieee_value(dpdg, ieee_negative_inf)
+            return
+         end if
+         do m = 1, size(stretches)
+            lo = min(stretches(m)%s1, stretches(m)%s2)
+            hi = max(stretches(m)%s1, stretches(m)%s2)
+            if (hi <= lo) cycle
+            j_lo = min(int(lo), ch%n - 2) + 1
+            j_hi = min(int(hi - 1.0e-12_wp), ch%n - 2) + 1
+            do j = j_lo, j_hi
+               call g_at(max(lo, real(j - 1, wp)), g_lo)
+               if (status /= wa_ok) return
+               call g_at(min(hi, real(j, wp)), g_hi)
+               if (status /= wa_ok) return
+               if (g < min(g_lo, g_hi) .or. g > max(g_lo, g_hi)) cycle
+               if (g == ch%g(j)) then
+                  s_at = real(j - 1, wp)
+               else if (g == ch%g(j + 1)) then
+                  s_at = real(j, wp)
+               else
+                  call solve_gbar(model, params, ch, j, g, s_at, status, errmsg)
+                  if (status /= wa_ok) return
+               end if
+               call state_at_s(s_at, st)
+               if (status /= wa_ok) return
+               p = st%p_star
+               call slope(j, s_at, dpdg)
+               return
+            end do
+         end do
+      end subroutine law_at
+
+      subroutine g_at(s_pos, g)
+         real(wp), intent(in) :: s_pos
+         real(wp), intent(out) :: g
+         type(state_type) :: st
+         call state_at_s(s_pos, st)
+         g = st%gbar
+      end subroutine g_at
+
+      subroutine state_at_s(s_pos, st)
+         real(wp), intent(in) :: s_pos
+         type(state_type), intent(out) :: st
+         integer :: i
+         real(wp) :: t
+         status = wa_ok
+         i = min(int(s_pos), ch%n - 2) + 1
+         t = s_pos - real(i - 1, wp)
+         if (t <= 0.0_wp) then
+            st = chain_state(ch, i)
+         else if (t >= 1.0_wp) then
+            st = chain_state(ch, i + 1)
+         else
+            call state_at_param(model, params, ch, i, param(ch, i, t), st, status, errmsg)
+         end if
+      end subroutine state_at_s
+
+      !> dP*/dgbar* by second-order differences in the parameter of chain interval j
+      !> (central, or one-sided at the interval's ends).
+      subroutine slope(j, s_pos, dpdg)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: s_pos
+         real(wp), intent(out) :: dpdg
+         real(wp), parameter :: h = 1.0e-5_wp
+         real(wp) :: t, tt(3), w(3), dp, dg
+         type(state_type) :: sk
+         integer :: k
+         dpdg = 0.0_wp
+         if (param_kind(ch, j) == 2) return             ! P* = -Sigma0 on the stretch
+         t = s_pos - real(j - 1, wp)
+         if (t - h < 0.0_wp) then
+            tt = [t, t + h, t + 2.0_wp*h]; w = [-1.5_wp, 2.0_wp, -0.5_wp]
+         else if (t + h > 1.0_wp) then
+            tt = [t, t - h, t - 2.0_wp*h]; w = [1.5_wp, -2.0_wp, 0.5_wp]
+         else
+            tt = [t - h, t, t + h]; w = [-0.5_wp, 0.0_wp, 0.5_wp]
+         end if
+         dp = 0.0_wp; dg = 0.0_wp
+         do k = 1, 3
+            if (w(k) == 0.0_wp) cycle
+            if (tt(k) <= 0.0_wp) then
+               sk = chain_state(ch, j)
+            else if (tt(k) >= 1.0_wp) then
+               sk = chain_state(ch, j + 1)
+            else
+               call state_at_param(model, params, ch, j, param(ch, j, tt(k)), sk, status, &
+                  errmsg)
+               if (status /= wa_ok) return
+            end if
+            dp = dp + w(k)*sk%p_star
+            dg = dg + w(k)*sk%gbar
+         end do
+         if (dg /= 0.0_wp) dpdg = dp/dg
+      end subroutine slope
+   end subroutine gap_law
+
+   ! ------------------------------------------------------------------ chain
+
+   !> Join the branch pieces end to start (MD: the no-contact piece from the first
+   !> interaction, then the contact curve) until a piece reaches a* = 1/2.
+   subroutine build_chain(model, params, branch, ch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(chain_type), intent(out) :: ch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, allocatable :: first(:), last(:)
+      logical, allocatable :: used(:)
+      integer :: i, k, n_pieces, cur, next
+      real(wp) :: d_best, dc, dp
+      type(state_type) :: s
+
+      status = wa_ok
+      allocate (first(branch%n), last(branch%n))
+      n_pieces = 0
+      i = 1
+      do while (i <= branch%n)                       ! pieces: event 8 at both ends
+         n_pieces = n_pieces + 1
+         first(n_pieces) = i
+         k = i + 1
+         do while (k < branch%n)
+            if (branch%event(k) == event_branch_end) exit
+            k = k + 1
+         end do
+         last(n_pieces) = min(k, branch%n)
+         i = last(n_pieces) + 1
+      end do
+      allocate (used(n_pieces))
+      used = .false.
+      allocate (ch%a(branch%n + 1), ch%c(branch%n + 1), ch%p(branch%n + 1), &
+         ch%g(branch%n + 1), ch%zone(branch%n + 1), ch%event(branch%n + 1))
+      cur = 1
+      ch%joined = branch%zone_case(1) == zone_no_contact
+      if (.not. ch%joined) then                      ! the limit a* -> 0 of the first piece
+         call solve_at_a(model, params, a_limit, branch%c_star(1), -1, s, status, errmsg)
+         if (status /= wa_ok) return
+         call push(ch, s%a_star, s%c_star, s%p_star, s%gbar, s%zone_case, 0)
+      end if
+      do k = 1, n_pieces
+         used(cur) = .true.
+         do i = first(cur), last(cur)
+            call push(ch, branch%a_star(i), branch%c_star(i), branch%p_star(i), &
+               branch%gbar(i), branch%zone_case(i), branch%event(i))
+         end do
+         if (branch%a_star(last(cur)) >= 0.5_wp - 1.0e-8_wp) exit
+         ! the piece starting nearest the end of this one (a joint at a* -> 0 matches
+         ! to within what a_start = 1e-6 moves c* and P*: relative 5 %)
+         next = 0
+         d_best = huge(1.0_wp)
+         do i = 1, n_pieces
+            if (used(i)) cycle
+            dc = abs(branch%c_star(first(i)) - branch%c_star(last(cur)))
+            dp = abs(branch%p_star(first(i)) - branch%p_star(last(cur)))
+            if (branch%zone_case(last(cur)) == zone_no_contact) then
+               ! a closed crest joins the contact curve's a* -> 0 end (at large mu c* there
+               ! can be below a_start: nearest c* among the contact pieces)
+               if (branch%zone_case(first(i)) == zone_no_contact) cycle
+            else if (dc > 0.05_wp*branch%c_star(last(cur)) + 1.0e-6_wp .or. &
+               dp > 0.05_wp*abs(branch%p_star(last(cur))) + 1.0e-6_wp) then
+               cycle
+            end if
+            if (dc + dp < d_best) then
+               d_best = dc + dp
+               next = i
+            end if
+         end do
+         if (next == 0) then
+            call set_error(wa_numerical_error, "gap_path: the branch pieces do not join "// &
+               "into one curve from the first interaction to full contact", status, errmsg)
+            return
+         end if
+         cur = next
+      end do
+      if (ch%a(ch%n) < 0.5_wp - 1.0e-8_wp) then
+         call set_error(wa_numerical_error, "gap_path: the joined branch does not reach "// &
+            "full contact", status, errmsg)
+         return
+      end if
+      allocate (ch%extremum(ch%n), ch%stable_after(ch%n), ch%y(ch%n))
+      ch%model = model
+      ch%y = 0.0_wp
+      if (model == model_dw .or. model == model_md) then
+         do i = 1, ch%n
+            if (ch%zone(i) == zone_inside .and. params%sigma0 > 0.0_wp) &
+               ch%y(i) = curve_variable(model, chain_state(ch, i))
+         end do
+      end if
+      ch%extremum = .false.
+      ch%stable_after = .false.
+   contains
+      subroutine push(ch, a, c, p, g, zone, event)
+         type(chain_type), intent(inout) :: ch
+         real(wp), intent(in) :: a, c, p, g
+         integer, intent(in) :: zone, event
+         if (ch%n > 0) then                          ! a joint repeats a state
+            if (ch%a(ch%n) == a .and. ch%c(ch%n) == c .and. ch%g(ch%n) == g .and. &
+               ch%zone(ch%n) == zone) return
+         end if
+         ch%n = ch%n + 1
+         ch%a(ch%n) = a; ch%c(ch%n) = c; ch%p(ch%n) = p; ch%g(ch%n) = g
+         ch%zone(ch%n) = zone; ch%event(ch%n) = event
+      end subroutine push
+   end subroutine build_chain
+
+   !> Mark the extrema of gbar* along the chain (refined to full precision where smooth)
+   !> and the stability of each stretch: stable on the last, flipped at each extremum.
+   subroutine locate_extrema(model, params, ch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(inout) :: ch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer :: i
+      logical :: stable
+      type(state_type) :: s
+
+      status = wa_ok
+      do i = 2, ch%n - 1
+         if ((ch%g(i) - ch%g(i - 1))*(ch%g(i + 1) - ch%g(i)) >= 0.0_wp) cycle
+         ch%extremum(i) = .true.
+         if (ch%event(i) == event_switch) cycle      ! a corner: exact already
+         if (param_kind(ch, i - 1) /= param_kind(ch, i)) cycle
+         if ((param(ch, i - 1, 1.0_wp) - param(ch, i - 1, 0.0_wp))* &
+            (param(ch, i, 1.0_wp) - param(ch, i, 0.0_wp)) <= 0.0_wp) cycle
+         call refine_extremum(model, params, ch, i, s, status, errmsg)
+         if (status /= wa_ok) return
+         ch%a(i) = s%a_star; ch%c(i) = s%c_star; ch%p(i) = s%p_star; ch%g(i) = s%gbar
+         if (ch%y(i) /= 0.0_wp) ch%y(i) = curve_variable(model, chain_state(ch, i))
+      end do
+      stable = .true.
+      do i = ch%n - 1, 1, -1
+         ch%stable_after(i) = stable
+         if (ch%extremum(i)) stable = .not. stable
+      end do
+   end subroutine locate_extrema
+
+   !> Golden sections on gbar* over the parameter between points i-1 and i+1.
+   subroutine refine_extremum(model, params, ch, i, s, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: r = 0.6180339887498949_wp
+      real(wp) :: lo, hi, x1, x2, f1, f2, sgn
+      integer :: iter
+      type(state_type) :: s1, s2
+
+      sgn = merge(1.0_wp, -1.0_wp, ch%g(i) > ch%g(i - 1))    ! +1: maximum
+      lo = param(ch, i - 1, 0.0_wp)
+      hi = param(ch, i, 1.0_wp)
+      x1 = hi - r*(hi - lo); x2 = lo + r*(hi - lo)
+      call state_at_param(model, params, ch, i, x1, s1, status, errmsg)
+      if (status /= wa_ok) return
+      call state_at_param(model, params, ch, i, x2, s2, status, errmsg)
+      if (status /= wa_ok) return
+      f1 = -sgn*s1%gbar; f2 = -sgn*s2%gbar
+      do iter = 1, 120
+         if (abs(hi - lo) <= 1.0e-13_wp*max(abs(hi), abs(lo)) + 1.0e-300_wp) exit
+         if (f1 < f2) then
+            hi = x2; x2 = x1; f2 = f1; s2 = s1
+            x1 = hi - r*(hi - lo)
+            call state_at_param(model, params, ch, i, x1, s1, status, errmsg)
+            if (status /= wa_ok) return
+            f1 = -sgn*s1%gbar
+         else
+            lo = x1; x1 = x2; f1 = f2; s1 = s2
+            x2 = lo + r*(hi - lo)
+            call state_at_param(model, params, ch, i, x2, s2, status, errmsg)
+            if (status /= wa_ok) return
+            f2 = -sgn*s2%gbar
+         end if
+      end do
+      s = merge(s1, s2, f1 < f2)
+      if (-sgn*s%gbar > -sgn*ch%g(i)) s = chain_state(ch, i)    ! never worse than the point
+   end subroutine refine_extremum
+
+   ! -------------------------------------------------------------- the walk
+
+   !> Approach (decreasing gbar* from far apart) or retraction (increasing from full
+   !> contact), along stable stretches, jumping at constant gbar* at each turn.
+   subroutine walk(model, params, ch, path, stage, walked, n_walked, status, errmsg)
+      integer, intent(in) :: model, stage
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(gap_path_type), intent(inout) :: path
+      type(stretch_type), intent(inout) :: walked(:)
+      integer, intent(inout) :: n_walked
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: s_pos, s_end, s_from, g
+      integer :: jumps, i, seg_lo, seg_hi, dir
+      logical :: far
+      type(state_type) :: st
+
+      status = wa_ok
+      if (stage == gap_stage_approach) then
+         g = path%g_touch
+         call add_far(path, stage, gap_event_touch, g)
+         far = .true.
+         s_pos = -1.0_wp
+      else
+         s_pos = real(ch%n - 1, wp)
+         call add(path, stage, gap_event_full_contact_left, chain_state(ch, ch%n))
+         far = .false.
+      end if
+      do jumps = 1, max_jumps + 1
+         if (far) then                                ! land from the P* = 0 states
+            if (.not. ch%joined .and. ch%stable_after(1) .and. abs(g - ch%g(1)) <= 1.0e-9_wp) then
+               s_pos = 0.0_wp                         ! the contact curve starts at the touch
+            else
+               call land(model, params, ch, stage, -1.0_wp, g, s_pos, status, errmsg)
+               if (status /= wa_ok) return
+            end if
+            if (s_pos /= 0.0_wp) then
+               call add_far(path, stage, gap_event_jump_start, g)
+               call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, errmsg)
+               if (status /= wa_ok) return
+            end if
+            far = .false.
+         end if
+         ! the stable stretch holding s_pos, and the direction of falling/rising gbar
+         i = min(int(s_pos), ch%n - 2) + 1
+         seg_lo = i; seg_hi = i + 1
+         do while (seg_lo > 1)
+            if (ch%extremum(seg_lo)) exit
+            seg_lo = seg_lo - 1
+         end do
+         do while (seg_hi < ch%n)
+            if (ch%extremum(seg_hi)) exit
+            seg_hi = seg_hi + 1
+         end do
+         if ((ch%g(seg_hi) < ch%g(seg_lo)) .eqv. (stage == gap_stage_approach)) then
+            dir = 1; s_end = real(seg_hi - 1, wp)
+         else
+            dir = -1; s_end = real(seg_lo - 1, wp)
+         end if
+         n_walked = n_walked + 1
+         walked(n_walked) = stretch_type(s_pos, s_end)
+         call contact_events(ch, path, stage, s_pos, s_end)
+         s_pos = s_end
+         i = nint(s_end) + 1                          ! chain point reached
+         if (i == ch%n) then
+            call add(path, stage, gap_event_full_contact_reached, chain_state(ch, i))
+            return
+         end if
+         g = ch%g(i)
+         if (stage == gap_stage_retraction .and. i == 1 .and. .not. ch%extremum(1)) then
+            if (ch%joined) then                       ! the P* = 0 end of the MD chain
+               call add_far(path, stage, gap_event_interaction_lost, g)
+            else                                      ! a* -> 0: contact lost, P* jumps to 0
+               call add(path, stage, gap_event_contact_lost, chain_state(ch, 1))
+               call add_far(path, stage, gap_event_jump_end, g)
+               call add_far(path, stage, gap_event_interaction_lost, g)
+            end if
+            return
+         end if
+         call add(path, stage, gap_event_jump_start, chain_state(ch, i))
+         s_from = s_pos
+         call land(model, params, ch, stage, s_from, g, s_pos, status, errmsg)
+         if (status /= wa_ok) return
+         if (s_pos < 0.0_wp) then                     ! onto the P* = 0 states
+            if (stage == gap_stage_approach) then
+               call set_error(wa_numerical_error, "gap_path: no stable state to land on "// &
+                  "during the approach", status, errmsg)
+               return
+            end if
+            call add_far(path, stage, gap_event_jump_end, g)
+            call add_far(path, stage, gap_event_interaction_lost, g)
+            return
+         end if
+         call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, errmsg)
+         if (status /= wa_ok) return
+      end do
+      call set_error(wa_numerical_error, "gap_path: more jumps than expected", status, errmsg)
+   end subroutine walk
+
+   !> Contact made (approach) or lost (retraction) where a walked stretch crosses the
+   !> joint between the MD no-contact states and the contact curve.
+   subroutine contact_events(ch, path, stage, s1, s2)
+      integer, intent(in) :: stage
+      type(chain_type), intent(in) :: ch
+      type(gap_path_type), intent(inout) :: path
+      real(wp), intent(in) :: s1, s2
+      integer :: i
+      do i = 1, ch%n - 1
+         if (ch%zone(i) /= zone_no_contact .or. ch%zone(i + 1) == zone_no_contact) cycle
+         if (real(i - 1, wp) >= min(s1, s2) .and. real(i - 1, wp) <= max(s1, s2) .and. &
+            s1 /= s2) call add(path, stage, merge(gap_event_contact_made, &
+            gap_event_contact_lost, stage == gap_stage_approach), chain_state(ch, i))
+      end do
+   end subroutine contact_events
+
+   !> The stable state with gbar* = g nearest to s_from along the chain: ahead of it on
+   !> approach, behind it on retraction (else anywhere); s_to = -1: the P* = 0 states.
+   subroutine land(model, params, ch, stage, s_from, g, s_to, status, errmsg)
+      integer, intent(in) :: model, stage
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: s_from, g
+      real(wp), intent(out) :: s_to
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer :: i, best, pass
+      real(wp) :: glo, ghi
+
+      status = wa_ok
+      s_to = -1.0_wp
+      best = 0
+      do pass = 1, 2
+         if (stage == gap_stage_approach) then
+            do i = 1, ch%n - 1
+               if (candidate(i, pass)) then
+                  best = i; exit
+               end if
+            end do
+         else
+            if (pass == 2 .and. g >= merge(ch%g(1), 1.0_wp, ch%joined)) return   ! far apart
+            do i = ch%n - 1, 1, -1
+               if (candidate(i, pass)) then
+                  best = i; exit
+               end if
+            end do
+         end if
+         if (best > 0) exit
+      end do
+      if (best == 0) then
+         call set_error(wa_numerical_error, "gap_path: no stable state to land on", status, &
+            errmsg)
+         return
+      end if
+      glo = ch%g(best); ghi = ch%g(best + 1)
+      if (g == glo) then
+         s_to = real(best - 1, wp)
+      else if (g == ghi) then
+         s_to = real(best, wp)
+      else
+         call solve_gbar(model, params, ch, best, g, s_to, status, errmsg)
+      end if
+   contains
+      logical function candidate(i, pass)
+         integer, intent(in) :: i, pass
+         real(wp) :: s
+         candidate = .false.
+         if (.not. ch%stable_after(i)) return
+         if (.not. (g >= min(ch%g(i), ch%g(i + 1)) .and. g <= max(ch%g(i), ch%g(i + 1)))) return
+         s = real(i - 1, wp)
+         if (pass == 1) then
+            if (stage == gap_stage_approach .and. s + 1.0_wp <= s_from) return
+            if (stage == gap_stage_retraction .and. s >= s_from) return
+            ! not on the stretch just left (it ends at the turn)
+            if (s_from >= 0.0_wp) then
+               if (same_stretch(ch, i, nint(s_from) + 1)) return
+            end if
+         end if
+         candidate = .true.
+      end function candidate
+   end subroutine land
+
+   !> Does chain interval i belong to a stretch ending at the extremum point j?
+   pure logical function same_stretch(ch, i, j)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i, j
+      integer :: k
+      same_stretch = .false.
+      if (i == j .or. i == j - 1) then
+         same_stretch = .true.
+         return
+      end if
+      if (i > j) then
+         do k = j + 1, i
+            if (ch%extremum(k)) return
+         end do
+      else
+         do k = i + 1, j - 1
+            if (ch%extremum(k)) return
+         end do
+      end if
+      same_stretch = .true.
+   end function same_stretch
+
+   !> The position in chain interval i where gbar* = g (Brent on the parameter).
+   subroutine solve_gbar(model, params, ch, i, g, s_to, status, errmsg)
+      use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: g
+      real(wp), intent(out) :: s_to
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      type(state_type) :: s
+      real(wp) :: x, x0, x1
+      logical :: done
+      integer :: iter
+      x0 = param(ch, i, 0.0_wp); x1 = param(ch, i, 1.0_wp)
+      call brent_init(solver, x0, ch%g(i) - g, x1, ch%g(i + 1) - g, &
+         1.0e-15_wp*max(abs(x0), abs(x1)))
+      status = wa_ok
+      do iter = 1, 200
+         call brent_propose(solver, x, done)
+         if (done) exit
+         call state_at_param(model, params, ch, i, x, s, status, errmsg)
+         if (status /= wa_ok) return
+         call brent_accept(solver, s%gbar - g)
+      end do
+      x = solver%b
+      if (x1 /= x0) then
+         s_to = real(i - 1, wp) + (x - x0)/(x1 - x0)
+      else
+         s_to = real(i - 1, wp)
+      end if
+   end subroutine solve_gbar
+
+   ! ---------------------------------------------------------------- energy
+
+   !> W* = -sum over walked stretches of int P* dgbar*: the net number of traversals
+   !> of each piece of the chain times its integral (stretches walked both ways cancel
+   !> exactly). Each piece: Gauss-Legendre panels in the parameter with dgbar*/dparam
+   !> from the interpolating polynomial through the nodes; graded towards a parameter 0.
+   subroutine energy_lost(model, params, ch, walked, n_nodes, n_splits, w, status, errmsg)
+      integer, intent(in) :: model, n_nodes, n_splits
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(stretch_type), intent(in) :: walked(:)
+      real(wp), intent(out) :: w
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), allocatable :: cuts(:)
+      real(wp) :: lo, hi, m, integral
+      integer :: k, j, i, n_cuts
+
+      status = wa_ok
+      w = 0.0_wp
+      allocate (cuts(2*size(walked) + ch%n))
+      n_cuts = 0
+      do k = 1, size(walked)
+         call put(walked(k)%s1); call put(walked(k)%s2)
+      end do
+      do i = 0, ch%n - 1
+         call put(real(i, wp))
+      end do
+      call sort(cuts(1:n_cuts))
+      do j = 1, n_cuts - 1
+         lo = cuts(j); hi = cuts(j + 1)
+         if (hi <= lo) cycle
+         m = 0.0_wp
+         do k = 1, size(walked)
+            if (min(walked(k)%s1, walked(k)%s2) <= lo .and. max(walked(k)%s1, walked(k)%s2) >= hi) &
+               m = m + sign(1.0_wp, walked(k)%s2 - walked(k)%s1)
+         end do
+         if (m == 0.0_wp) cycle
+         do k = 1, n_splits
+            call piece_integral(model, params, ch, lo + (hi - lo)*real(k - 1, wp)/n_splits, &
+               lo + (hi - lo)*real(k, wp)/n_splits, n_nodes, integral, status, errmsg)
+            if (status /= wa_ok) return
+            w = w - m*integral
+         end do
+      end do
+   contains
+      subroutine put(x)
+         real(wp), intent(in) :: x
+         if (x < 0.0_wp) return
+         n_cuts = n_cuts + 1
+         cuts(n_cuts) = x
+      end subroutine put
+   end subroutine energy_lost
+
+   pure subroutine sort(x)
+      real(wp), intent(inout) :: x(:)
+      integer :: i, j
+      real(wp) :: t
+      do i = 2, size(x)
+         t = x(i)
+         j = i - 1
+         do while (j >= 1)
+            if (x(j) <= t) exit
+            x(j + 1) = x(j)
+            j = j - 1
+         end do
+         x(j + 1) = t
+      end do
+   end subroutine sort
+
+   !> int P* dgbar* from s = lo to s = hi within one chain interval.
+   subroutine piece_integral(model, params, ch, lo, hi, n_nodes, integral, status, errmsg)
+      integer, intent(in) :: model, n_nodes
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: lo, hi
+      real(wp), intent(out) :: integral
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer :: i, k, n_panels
+      real(wp) :: x0, x1, y0, y1, part
+      status = wa_ok
+      integral = 0.0_wp
+      i = min(int(0.5_wp*(lo + hi)), ch%n - 2) + 1
+      x0 = param(ch, i, lo - real(i - 1, wp))
+      x1 = param(ch, i, hi - real(i - 1, wp))
+      if (param_kind(ch, i) == 2) then                ! P* = -Sigma0 exactly
+         integral = -params%sigma0*(ch%g(i + 1) - ch%g(i))*(hi - lo)
+         return
+      end if
+if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
+         ! graded panels towards the parameter's zero (a* -> 0 or c* -> 0)
+         ! halving until the panel next to the end is as narrow as the end's distance
+         ! from 0 (at most 60 halvings)
+         n_panels = 60
+         if (min(x0, x1) > 0.0_wp) n_panels = min(60, 2 + &
+            ceiling(log(abs(x1 - x0)/min(x0, x1))/log(2.0_wp)))
+         do k = 1, n_panels
+            if (x0 < x1) then
+               y0 = x0 + (x1 - x0)*0.5_wp**(n_panels - k + 1); y1 = x0 + (x1 - x0)*0.5_wp**(n_panels - k)
+               if (k == 1) y0 = x0
+            else
+               y0 = x1 + (x0 - x1)*0.5_wp**(n_panels - k); y1 = x1 + (x0 - x1)*0.5_wp**(n_panels - k + 1)
+               if (k == 1) y1 = x1
+            end if
+            call panel(y0, y1, part)
+            if (status /= wa_ok) return
+            integral = integral + part
+         end do
+      else
+         call panel(x0, x1, part)
+         integral = part
+      end if
+   contains
+      subroutine panel(u0, u1, res)
+         real(wp), intent(in) :: u0, u1
+         real(wp), intent(out) :: res
+         real(wp) :: xg(n_nodes), wg(n_nodes), x(n_nodes), pv(n_nodes), gv(n_nodes), &
+            bw(n_nodes), dg
+         type(state_type) :: s
+         integer :: j, l
+         res = 0.0_wp
+         if (u1 == u0) return
+         call gauss_legendre(xg, wg)
+         do j = 1, n_nodes
+            x(j) = 0.5_wp*(u0 + u1) + 0.5_wp*(u1 - u0)*xg(j)
+            call state_at_param(model, params, ch, i, x(j), s, status, errmsg)
+            if (status /= wa_ok) return
+            pv(j) = s%p_star; gv(j) = s%gbar
+         end do
+         do j = 1, n_nodes                              ! barycentric weights in xg
+            bw(j) = 1.0_wp
+            do l = 1, n_nodes
+               if (l /= j) bw(j) = bw(j)/(xg(j) - xg(l))
+            end do
+         end do
+         do j = 1, n_nodes                              ! d gbar / d xg at the nodes
+            dg = 0.0_wp
+            do l = 1, n_nodes
+               if (l /= j) dg = dg + (bw(l)/bw(j))*(gv(l) - gv(j))/(xg(j) - xg(l))
+            end do
+            res = res + wg(j)*pv(j)*dg
+         end do
+      end subroutine panel
+   end subroutine piece_integral
+
+   !> Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n).
+   pure subroutine gauss_legendre(x, w)
+      real(wp), intent(out) :: x(:), w(:)
+      integer :: n, i, k, it
+      real(wp) :: z, p0, p1, p2, dp
+      n = size(x)
+      do i = 1, n
+         z = cos(pi*(real(i, wp) - 0.25_wp)/(real(n, wp) + 0.5_wp))
+         do it = 1, 100
+            p0 = 1.0_wp; p1 = z
+            do k = 2, n
+               p2 = (real(2*k - 1, wp)*z*p1 - real(k - 1, wp)*p0)/real(k, wp)
+               p0 = p1; p1 = p2
+            end do
+            dp = real(n, wp)*(z*p1 - p0)/(z*z - 1.0_wp)
+            if (abs(p1/dp) < 1.0e-16_wp) exit
+            z = z - p1/dp
+         end do
+         x(i) = z
+         w(i) = 2.0_wp/((1.0_wp - z*z)*dp*dp)
+      end do
+   end subroutine gauss_legendre
+
+   ! ------------------------------------------------------- point solves
+
+   !> 1: chain interval i is parametrised by c* (no-contact states), else 0 (a*).
+   pure integer function param_kind(ch, i)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i
+      param_kind = 0
+      if (ch%zone(i) == zone_no_contact .and. ch%zone(i + 1) == zone_no_contact) then
+         param_kind = 1
+         if (ch%c(i) == 0.5_wp .and. ch%c(i + 1) == 0.5_wp) param_kind = 2
+      else if (ch%zone(i) == zone_inside .and. ch%zone(i + 1) == zone_inside .and. &
+         (ch%model == model_dw .or. ch%model == model_md) .and. ch%event(i) /= event_switch &
+         .and. ch%event(i + 1) /= event_switch) then
+         ! steep in the (a*, w y) plane: y is the parameter (a* turns back there)
+         if (abs(ch%a(i + 1) - ch%a(i)) < curve_weight(ch%model)*abs(ch%y(i + 1) - ch%y(i))) &
+            param_kind = 3
+      end if
+   end function param_kind
+
+   pure real(wp) function param(ch, i, t)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i
+      real(wp), intent(in) :: t
+      if (param_kind(ch, i) == 1) then
+         param = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
+      else if (param_kind(ch, i) == 2) then
+         param = ch%g(i) + t*(ch%g(i + 1) - ch%g(i))
+      else if (param_kind(ch, i) == 3) then
+         param = ch%y(i) + t*(ch%y(i + 1) - ch%y(i))
+      else
+         param = ch%a(i) + t*(ch%a(i + 1) - ch%a(i))
+      end if
+   end function param
+
+   pure function chain_state(ch, i) result(s)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i
+      type(state_type) :: s
+      s%a_star = ch%a(i); s%c_star = ch%c(i); s%p_star = ch%p(i); s%gbar = ch%g(i)
+      s%zone_case = ch%zone(i)
+      s%gap_width = ch%c(i) - ch%a(i)                 ! c* - a* (wa_state)
+   end function chain_state
+
+   !> The state of chain interval i at parameter x (with its gbar*).
+   subroutine state_at_param(model, params, ch, i, x, s, status, errmsg)
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: x
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: t, c_guess
+      integer :: zone
+      if (param_kind(ch, i) == 1) then
+         call md_no_contact_state(params, min(x, 0.5_wp - epsilon(x)), s, status, errmsg)
+         return
+      else if (param_kind(ch, i) == 2) then           ! zone over the period: gbar = 1 + crest gap
+         call md_no_contact_state(params, 0.5_wp, s, status, errmsg, &
+            crest_gap=min(max(x - 1.0_wp, 0.0_wp), 2.0_wp*params%dcod - 2.0_wp))
+         return
+      else if (param_kind(ch, i) == 3) then
+         call solve_at_y(model, params, ch, i, x, s, status, errmsg)
+         return
+      end if
+      t = 0.5_wp
+      if (ch%a(i + 1) /= ch%a(i)) t = (x - ch%a(i))/(ch%a(i + 1) - ch%a(i))
+      c_guess = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
+      zone = ch%zone(i + 1)
+      if (ch%event(i + 1) == event_switch .or. zone == zone_full_contact) zone = ch%zone(i)
+      if (zone == zone_no_contact .or. zone == zone_full_contact) zone = -1
+      if (ch%event(i) == event_switch .and. ch%zone(i + 1) /= zone_full_contact) &
+         zone = ch%zone(i + 1)
+      call solve_at_a(model, params, x, c_guess, zone, s, status, errmsg)
+   end subroutine state_at_param
+
+   !> The case-1 state of chain interval i at curve variable y: Brent on F(a*, y) in a*
+   !> over the interval's a* range, widened until F changes sign.
+   subroutine solve_at_y(model, params, ch, i, y, s, status, errmsg)
+      use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: y
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: lo, hi, f_lo, f_hi, width, a
+      logical :: done
+      integer :: iter
+      width = abs(ch%a(i + 1) - ch%a(i)) + 1.0e-14_wp
+      lo = min(ch%a(i), ch%a(i + 1)); hi = max(ch%a(i), ch%a(i + 1))
+      do iter = 1, 60
+         lo = max(lo - width, 0.5_wp*lo)
+         hi = min(hi + width, 0.5_wp*(hi + 0.5_wp))
+         f_lo = curve_residual(model, params, lo, y)
+         f_hi = curve_residual(model, params, hi, y)
+         if (f_lo*f_hi <= 0.0_wp) exit
+         width = 2.0_wp*width
+      end do
+      if (.not. (f_lo*f_hi <= 0.0_wp)) then
+         call set_error(wa_numerical_error, "gap_path: no case-1 state at this curve "// &
+            "variable near the branch", status, errmsg)
+         return
+      end if
+      call brent_init(solver, lo, f_lo, hi, f_hi, 1.0e-16_wp)
+      do iter = 1, 200
+         call brent_propose(solver, a, done)
+         if (done) exit
+         call brent_accept(solver, curve_residual(model, params, a, y))
+      end do
+      s = curve_state(model, params, solver%b, y)
+      call state_mean_gap(model, params, s, s%gbar, status, errmsg)
+   end subroutine solve_at_y
+
+   !> The equilibrium at a* nearest c_guess (in zone case `zone` unless zone < 0).
+   subroutine solve_at_a(model, params, a, c_guess, zone, s, status, errmsg)
+      integer, intent(in) :: model, zone
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a, c_guess
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: roots(max_model_roots)
+      integer :: n, k, best
+      real(wp) :: d, d_best
+      call model_roots(model, params, a, roots, n, status, errmsg)
+      if (status /= wa_ok) return
+      best = 0
+      d_best = huge(1.0_wp)
+      do k = 1, min(n, size(roots))
+         if (zone >= 0 .and. roots(k)%zone_case /= zone) cycle
+         d = abs(roots(k)%c_star - c_guess)
+         if (d < d_best) then
+            d_best = d; best = k
+         end if
+      end do
+      if (best == 0) then
+         call set_error(wa_numerical_error, "gap_path: no equilibrium near the branch at "// &
+            "a point of the quadrature", status, errmsg)
+         return
+      end if
+      s = roots(best)
+      call state_mean_gap(model, params, s, s%gbar, status, errmsg)
+   end subroutine solve_at_a
+
+   ! ----------------------------------------------------------- event list
+
+   subroutine add(path, stage, event, s)
+      type(gap_path_type), intent(inout) :: path
+      integer, intent(in) :: stage, event
+      type(state_type), intent(in) :: s
+      if (path%n >= max_events) return
+      path%n = path%n + 1
+      path%stage(path%n) = stage; path%event(path%n) = event
+      path%a_star(path%n) = s%a_star; path%c_star(path%n) = s%c_star
+      path%p_star(path%n) = s%p_star; path%gbar(path%n) = s%gbar
+      path%zone_case(path%n) = s%zone_case
+   end subroutine add
+
+   !> An event on the P* = 0 states (surfaces apart) at gbar* = g.
+   subroutine add_far(path, stage, event, g)
+      type(gap_path_type), intent(inout) :: path
+      integer, intent(in) :: stage, event
+      real(wp), intent(in) :: g
+      type(state_type) :: s
+      s%gbar = g
+      s%zone_case = zone_no_contact
+      call add(path, stage, event, s)
+   end subroutine add_far
+
+   subroutine add_at(model, params, ch, path, stage, event, s_pos, status, errmsg)
+      integer, intent(in) :: model, stage, event
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(gap_path_type), intent(inout) :: path
+      real(wp), intent(in) :: s_pos
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: s
+      integer :: i
+      real(wp) :: t
+      status = wa_ok
+      i = min(int(s_pos), ch%n - 2) + 1
+      t = s_pos - real(i - 1, wp)
+      if (t == 0.0_wp) then
+         s = chain_state(ch, i)
+      else if (t == 1.0_wp) then
+         s = chain_state(ch, i + 1)
+      else
+         call state_at_param(model, params, ch, i, param(ch, i, t), s, status, errmsg)
+         if (status /= wa_ok) return
+      end if
+      call add(path, stage, event, s)
+   end subroutine add_at
+
+end module wa_gappath
