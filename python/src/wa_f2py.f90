@@ -674,11 +674,6 @@ end subroutine fa_adhesion_map
 !> traction = gap = NaN.
 subroutine fa_profile(n, model, alpha, mu, a_star, c_star, principal, x_star, traction, gap, &
       state_c, state_p, state_zone, state_gbar, status, message)
-!> Gap control: P* on approach and retraction and dP*/dgbar* at n mean gaps (gap_law),
-!> and the energy lost per cycle W* and W*/(pi alpha^2/2) (gap_path). On failure the
-!> arrays and W* are NaN.
-subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_approach, &
-      dpdg_retract, w_star, w_fraction, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok
@@ -687,10 +682,6 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    use wa_models, only: check_model, model_profile
    implicit none
    !> Number of points
-   use wa_models, only: check_model
-   use wa_gappath, only: gap_path_type, gap_path, gap_law
-   implicit none
-   !> Number of mean gaps, >= 1
    integer(c_int), intent(in) :: n
    !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
    integer(c_int), intent(in) :: model
@@ -713,14 +704,6 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    !> c*, P*, zone case and gbar* of the state
    real(c_double), intent(out) :: state_c, state_p, state_gbar
    integer(c_int), intent(out) :: state_zone
-   !> Mean gaps gbar* >= 0
-   real(c_double), intent(in) :: gbar(n)
-   !> P* on approach and on retraction
-   real(c_double), intent(out) :: p_approach(n), p_retract(n)
-   !> dP*/dgbar* on approach and on retraction
-   real(c_double), intent(out) :: dpdg_approach(n), dpdg_retract(n)
-   !> Energy lost per cycle and its fraction of the work of adhesion
-   real(c_double), intent(out) :: w_star, w_fraction
    !> wa_ok or the failure's status
    integer(c_int), intent(out) :: status
    !> The failure's message
@@ -755,6 +738,41 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    end if
    status = int(stat, c_int)
 end subroutine fa_profile
+
+!> Gap control: P* on approach and retraction and dP*/dgbar* at n mean gaps (gap_law),
+!> and the energy lost per cycle W* and W*/(pi alpha^2/2) (gap_path). On failure the
+!> arrays and W* are NaN.
+subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_approach, &
+      dpdg_retract, w_star, w_fraction, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_gappath, only: gap_path_type, gap_path, gap_law
+   implicit none
+   !> Number of mean gaps, >= 1
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Mean gaps gbar* >= 0
+   real(c_double), intent(in) :: gbar(n)
+   !> P* on approach and on retraction
+   real(c_double), intent(out) :: p_approach(n), p_retract(n)
+   !> dP*/dgbar* on approach and on retraction
+   real(c_double), intent(out) :: dpdg_approach(n), dpdg_retract(n)
+   !> Energy lost per cycle and its fraction of the work of adhesion
+   real(c_double), intent(out) :: w_star, w_fraction
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
    type(gap_path_type) :: path
    integer :: stat
 
