@@ -91,9 +91,13 @@ def figure4(alphas=(0.3, 0.6), mus=(0.3, 1.0, 3.0, 10.0), *, models=("dw", "md")
                 b = _trace_or_warn(model, alpha, mu)
                 if b is None:
                     continue
-                ax.plot(b.a_star, _by_case(b.P_star, b.zone_case, 1), color=colour,
-                        ls=styles.get(model, ":"), lw=1.4,
-                        label=f"{model.upper()} $\\mu$={mu:g}")
+                case1 = _by_case(b.P_star, b.zone_case, 1)
+                if not np.any(np.isfinite(case1)):   # no state with a* < c* < 1/2: no entry
+                    continue
+                extent = float(np.nanmax(np.where(np.isfinite(case1), b.a_star, np.nan)))
+                note = f" ($a^*$<{extent:.2g}, hidden)" if extent < 0.05 else ""
+                ax.plot(b.a_star, case1, color=colour, ls=styles.get(model, ":"), lw=1.4,
+                        label=f"{model.upper()} $\\mu$={mu:g}{note}")
         ax.set_xlim(0.0, 0.5)
         ax.set_ylim(-1.2, 1.1)
         ax.axhline(0.0, color="0.8", lw=0.6, zorder=0)
@@ -107,7 +111,7 @@ def figure4(alphas=(0.3, 0.6), mus=(0.3, 1.0, 3.0, 10.0), *, models=("dw", "md")
     return fig
 
 
-def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw"):
+def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw", paper_figure=6):
     """Contact and interaction-zone half-widths against the load (paper Fig. 6).
 
     a* in red and c* in black, solid where a* < c* < 1/2 and dash-dot where c* = 1/2
@@ -122,6 +126,8 @@ def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw"):
         One panel per mu (the paper: 0.1, 1, 2.5, 3, 5).
     model : str
         "dw" (the paper) or "md".
+    paper_figure : int
+        The paper's figure this one corresponds to (6, 7 or 8), named in the title.
 
     Returns
     -------
@@ -147,9 +153,16 @@ def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw"):
         ax.set_xlabel("$P^*$")
         ax.set_ylabel("$a^*$ (red), $c^*$ (black)")
         ax.set_title(f"$\\alpha$ = {alpha:g}, $\\mu$ = {mu:g}", fontsize=10)
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], color="tab:red", lw=1.4, label="$a^*$"),
+               Line2D([], [], color="k", lw=1.0, label="$c^*$"),
+               Line2D([], [], color="0.4", ls=_CASE_STYLE[1], label="$a^* < c^* < 1/2$"),
+               Line2D([], [], color="0.4", ls=_CASE_STYLE[2], label="$c^* = 1/2$"),
+               Line2D([], [], color="tab:blue", ls=":", label="jump (load control)")]
+    fig.legend(handles=handles, loc="lower center", ncol=5, fontsize=8, frameon=False)
     fig.suptitle(f"{model.upper()}: half-widths against load, path in blue "
-                 "(cf. paper Fig. 6)", fontsize=10)
-    fig.tight_layout()
+                 f"(cf. paper Fig. {paper_figure})", fontsize=10)
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
     return fig
 
 
@@ -167,11 +180,13 @@ def _overlay_path(ax, model, alpha, mu):
             a_end = 0.0 if end.kind == "pull_off" else end.a_star
             ax.plot([start.P_star, end.P_star], [start.a_star, a_end], color="tab:blue",
                     ls=":", lw=1.2)
-    ax.plot([path.P_fc], [0.5], "v", color="tab:blue", ms=5)
+    label = dict(fontsize=9, color="tab:blue", zorder=5,
+                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85))
+    ax.plot([path.P_fc], [0.5], "v", color="tab:blue", ms=6, zorder=5)
     if np.isfinite(path.P_pf):
-        ax.plot([path.P_pf], [0.0], "^", color="tab:blue", ms=5)
-        ax.text(path.P_pf, 0.02, " $P_{pf}$", fontsize=7, color="tab:blue")
-    ax.text(path.P_fc, 0.47, "$P_{fc}$ ", fontsize=7, color="tab:blue", ha="right")
+        ax.plot([path.P_pf], [0.0], "^", color="tab:blue", ms=6, zorder=5)
+        ax.text(path.P_pf, 0.04, "$P_{pf}$", ha="center", va="bottom", **label)
+    ax.text(path.P_fc, 0.44, "$P_{fc}$", ha="center", va="top", **label)
 
 
 def mechanism_runs(mechanism: np.ndarray):
@@ -224,8 +239,8 @@ def figures9_10(alphas=(0.3, 0.6, 1.0), mu=None, model="dw"):
                 ax.semilogx(mu[start:stop], values[start:stop], color=colour, lw=1.5,
                             ls=_MECHANISM_STYLE[MECHANISMS[code]])
             ax.plot([], [], color=colour, label=f"$\\alpha$ = {alpha:g}")
-        p_jkr = _jkr_full_contact(alpha)
-        ax9.axhline(p_jkr, color=colour, lw=0.7, ls=(0, (1, 3)))
+        p_jkr = _jkr_full_contact(alpha)    # thin and faint: not a "snap" segment
+        ax9.axhline(p_jkr, color=colour, lw=0.8, ls=(0, (8, 3, 1, 3, 1, 3)), alpha=0.45)
     for ax in (ax9, ax10):
         for name, ls in _MECHANISM_STYLE.items():
             if ax is ax10 and name == "snap":
@@ -236,7 +251,7 @@ def figures9_10(alphas=(0.3, 0.6, 1.0), mu=None, model="dw"):
         ax.set_xlim(mu.min(), mu.max())
     ax9.set_ylabel("$P^*_{fc}$")
     ax9.set_title(f"{model.upper()}: load to reach full contact (cf. paper Fig. 9)\n"
-                  "thin dotted: JKR value", fontsize=9)
+                  "faint dash-dot-dot: JKR value", fontsize=9)
     ax10.set_ylabel("$P^*_{pf}$")
     ax10.set_title(f"{model.upper()}: pull-off load (cf. paper Fig. 10)", fontsize=9)
     fig9.tight_layout()
