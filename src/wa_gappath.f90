@@ -98,18 +98,10 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       type(chain_type) :: ch
       type(stretch_type) :: walked(2*max_jumps + 4)
-      integer :: n_walked, n_nodes, n_splits
+      integer :: n_walked, n_approach, n_nodes, n_splits
 
-      call build_chain(model, params, branch, ch, status, errmsg)
-      if (status /= wa_ok) return
-      path%g_touch = 1.0_wp
-      if (ch%joined) path%g_touch = ch%g(1)
-      call locate_extrema(model, params, ch, status, errmsg)
-      if (status /= wa_ok) return
-      n_walked = 0
-      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
-      if (status /= wa_ok) return
-      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+      call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
+         status, errmsg)
       if (status /= wa_ok) return
       n_nodes = n_gauss
       n_splits = 1
@@ -163,17 +155,8 @@ contains
       end do
       call trace_branch(model, params, branch, status, errmsg)
       if (status /= wa_ok) return
-      call build_chain(model, params, branch, ch, status, errmsg)
-      if (status /= wa_ok) return
-      path%g_touch = 1.0_wp
-      if (ch%joined) path%g_touch = ch%g(1)
-      call locate_extrema(model, params, ch, status, errmsg)
-      if (status /= wa_ok) return
-      n_walked = 0
-      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
-      if (status /= wa_ok) return
-      n_approach = n_walked
-      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+      call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
+         status, errmsg)
       if (status /= wa_ok) return
       do k = 1, size(gbar)
          call law_at(walked(1:n_approach), gbar(k), p_approach(k), dpdg_approach(k))
@@ -477,6 +460,34 @@ contains
 
    !> Approach (decreasing gbar* from far apart) or retraction (increasing from full
    !> contact), along stable stretches, jumping at constant gbar* at each turn.
+   !> The chain of the traced branch with its gbar* extrema, and the approach and the
+   !> retraction walked on it: walked(1:n_approach) approach, then the retraction up to
+   !> n_walked (shared by gap_path and gap_law).
+   subroutine walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
+         status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(chain_type), intent(out) :: ch
+      type(gap_path_type), intent(inout) :: path
+      type(stretch_type), intent(inout) :: walked(:)
+      integer, intent(out) :: n_walked, n_approach
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      n_walked = 0
+      n_approach = 0
+      call build_chain(model, params, branch, ch, status, errmsg)
+      if (status /= wa_ok) return
+      path%g_touch = 1.0_wp
+      if (ch%joined) path%g_touch = ch%g(1)
+      call locate_extrema(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
+      call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
+      if (status /= wa_ok) return
+      n_approach = n_walked
+      call walk(model, params, ch, path, gap_stage_retraction, walked, n_walked, status, errmsg)
+   end subroutine walk_cycle
+
    subroutine walk(model, params, ch, path, stage, walked, n_walked, status, errmsg)
       integer, intent(in) :: model, stage
       type(params_type), intent(in) :: params

@@ -1,6 +1,7 @@
 !> Regression tests for the robustness issue (9): every reproducer found by the contract
 !> fuzzer gives a correct result or a documented status, and nothing hangs.
 module test_robustness
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use wavyadhesion
    use wa_kinds, only: pi
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
@@ -112,7 +113,7 @@ contains
       do i = 1, size(mus)
          call critical_forces(model_md, params_of(alphas(i), mus(i)), fc, pf, status)
          call check(error, status == wa_ok, "md critical forces in a mechanism-change window")
-         call check(error, ieee_finite(fc) .and. ieee_finite(pf), "finite forces")
+         call check(error, ieee_is_finite(fc) .and. ieee_is_finite(pf), "finite forces")
          call critical_forces(model_md, params_of(alphas(i), mus(i)*(1.0_wp + 1.0e-6_wp)), &
             fc2, pf2, status)
          call check(error, status == wa_ok .and. abs(fc2 - fc) < 1.0e-3_wp, "P_fc continuous")
@@ -150,10 +151,5 @@ contains
       call critical_forces(model_dw, params_of(0.3_wp, 1.0e9_wp), fc, pf, status)
       call check(error, status == wa_numerical_error, "dw at mu = 1e9: clean refusal")
    end subroutine test_dw_trace_large_mu
-
-   elemental logical function ieee_finite(x)
-      real(wp), intent(in) :: x
-      ieee_finite = abs(x) <= huge(x)
-   end function ieee_finite
 
 end module test_robustness
