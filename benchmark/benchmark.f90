@@ -4,20 +4,26 @@ program benchmark
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use wavyadhesion
    implicit none
-   character(len=64) :: arg
+   character(len=64) :: arg, only
    integer :: i_arg
+
+   only = "all"
 
    do i_arg = 1, command_argument_count()
       call get_command_argument(i_arg, arg)
       select case (arg)
       case ("--help", "-h")
-         write (*, '(a)') "usage: wavyadhesion-benchmark [--help | --version]", &
-            "Times DW and MD points, branches and critical forces against the SPEC 9 targets", &
-            "(single core, medians over repeats) and prints the figures; takes no options."
+         write (*, '(a)') "usage: wavyadhesion-benchmark [--help | --version | SECTION...]", &
+            "Times DW and MD points, branches, critical forces, gap control and the adhesion", &
+            "map against the SPEC 9 and issue targets (single core, medians over repeats) and", &
+            "prints the figures. SECTION (default all): point branch grid critical gap map."
          stop
       case ("--version")
          write (*, '(a)') "wavyadhesion-benchmark "//wa_version
          stop
+      case ("point", "branch", "grid", "critical", "gap", "map")
+         if (only == "all") only = ""
+         only = trim(only)//" "//trim(arg)
       case default
          write (error_unit, '(a)') "wavyadhesion-benchmark: unknown argument '"//trim(arg)// &
             "' (try --help)"
@@ -29,23 +35,45 @@ program benchmark
    write (*, '(a)') "target (SPEC 9): DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"
    write (*, '(a)') "                 MD branch <= 20 ms, critical forces 3 alpha x 200 mu (DW) <= 1 s"
    write (*, '(a)') "target (issue 13): adhesion map 200 alpha, DW <= 2 s, MD <= 20 s"
-   call bench_points(model_dw, 0.3_wp, 1.0_wp)
-   call bench_points(model_dw, 0.3_wp, 1000.0_wp)
-   call bench_points(model_dw, 1.0_wp, 0.1_wp)
-   call bench_points(model_md, 0.3_wp, 1.0_wp)
-   call bench_points(model_md, 0.3_wp, 1000.0_wp)
-   call bench_branch(model_dw, 0.3_wp, 1.0_wp)
-   call bench_branch(model_dw, 0.3_wp, 5.0_wp)
-   call bench_branch(model_dw, 0.6_wp, 3.0_wp)
-   call bench_branch(model_md, 0.3_wp, 1.0_wp)
-   call bench_branch(model_md, 0.3_wp, 5.0_wp)
-   call bench_branch_grid(model_dw)
-   call bench_branch_grid(model_md)
-   call bench_critical()
-   call bench_map(model_dw)
-   call bench_map(model_md)
+   write (*, '(a)') "target (issue 11): gap path <= 2x load path; gap law 401 rows DW <= 5 ms, MD <= 30 ms"
+   if (wanted("point")) then
+      call bench_points(model_dw, 0.3_wp, 1.0_wp)
+      call bench_points(model_dw, 0.3_wp, 1000.0_wp)
+      call bench_points(model_dw, 1.0_wp, 0.1_wp)
+      call bench_points(model_md, 0.3_wp, 1.0_wp)
+      call bench_points(model_md, 0.3_wp, 1000.0_wp)
+   end if
+   if (wanted("branch")) then
+      call bench_branch(model_dw, 0.3_wp, 1.0_wp)
+      call bench_branch(model_dw, 0.3_wp, 5.0_wp)
+      call bench_branch(model_dw, 0.6_wp, 3.0_wp)
+      call bench_branch(model_md, 0.3_wp, 1.0_wp)
+      call bench_branch(model_md, 0.3_wp, 5.0_wp)
+   end if
+   if (wanted("grid")) then
+      call bench_branch_grid(model_dw)
+      call bench_branch_grid(model_md)
+   end if
+   if (wanted("critical")) call bench_critical()
+   if (wanted("gap")) then
+      call bench_gap(model_dw, 0.3_wp, 1.0_wp)
+      call bench_gap(model_dw, 0.3_wp, 5.0_wp)
+      call bench_gap(model_dw, 1.0_wp, 1.0_wp)
+      call bench_gap(model_md, 0.3_wp, 1.0_wp)
+      call bench_gap(model_md, 0.3_wp, 5.0_wp)
+      call bench_gap(model_md, 1.0_wp, 1.0_wp)
+   end if
+   if (wanted("map")) then
+      call bench_map(model_dw)
+      call bench_map(model_md)
+   end if
 
 contains
+
+   logical function wanted(section)
+      character(len=*), intent(in) :: section
+      wanted = only == "all" .or. index(" "//trim(only)//" ", " "//section//" ") > 0
+   end function wanted
 
    !> The adhesion map: 200 log alpha in [0.01, 10], mu in [1e-3, 1e3] (issue 13 targets:
    !> DW <= 2 s, MD <= 20 s). One run: the map is deterministic.
@@ -66,6 +94,10 @@ contains
          " 200 alpha (0.01..10) x mu 1e-3..1e3: ", t, " s  (", map%n_boundaries, &
          " curves, ", n_points, " points, ", map%n_paths, " load paths)  status ", status
    end subroutine bench_map
+
+   real(wp) function cpu_seconds()
+      call cpu_time(cpu_seconds)
+   end function cpu_seconds
 
    real(wp) function seconds()
       integer(int64) :: count, rate
@@ -194,6 +226,39 @@ contains
          " 7x7 grid (alpha 0.01..10, mu 0.001..1000): slowest ", 1.0e3_wp*worst, &
          " ms at alpha ", worst_alpha, " mu ", worst_mu, "; failures ", n_fail
    end subroutine bench_branch_grid
+
+   !> Gap control (issue 11): a gap-controlled path against the load path of the same case
+   !> (both include the trace), and a 401-row gap-law table (gbar* 0..1.5, trace included).
+   !> Process CPU time, best of the repeats (robust on a shared machine).
+   subroutine bench_gap(model, alpha, mu)
+      integer, intent(in) :: model
+      real(wp), intent(in) :: alpha, mu
+      integer, parameter :: repeats = 15, rows = 401
+      type(params_type) :: params
+      type(path_type) :: lp
+      type(gap_path_type) :: gp
+      real(wp) :: t_load(repeats), t_gap(repeats), t_law(repeats), t0
+      real(wp) :: g(rows), pa(rows), pr(rows), da(rows), dr(rows)
+      integer :: r, k, s1, s2, s3
+      call new_params(alpha, mu, params, s1)
+      g = [(1.5_wp*real(k - 1, wp)/real(rows - 1, wp), k=1, rows)]
+      do r = 1, repeats
+         t0 = cpu_seconds()
+         call load_path(model, params, lp, s1)
+         t_load(r) = cpu_seconds() - t0
+         t0 = cpu_seconds()
+         call gap_path(model, params, gp, s2)
+         t_gap(r) = cpu_seconds() - t0
+         t0 = cpu_seconds()
+         call gap_law(model, params, g, pa, pr, da, dr, s3)
+         t_law(r) = cpu_seconds() - t0
+      end do
+      write (*, '(a,a,a,f6.3,a,g10.3,a,f8.3,a,f8.3,a,f5.2,a,f8.3,a,i0,1x,i0,1x,i0,a)') &
+         "gap ", name(model), " alpha ", alpha, " mu ", mu, ": load path ", &
+         1.0e3_wp*minval(t_load), " ms, gap path ", 1.0e3_wp*minval(t_gap), " ms (", &
+         minval(t_gap)/minval(t_load), "x), gap law 401 rows ", 1.0e3_wp*minval(t_law), &
+         " ms  (status ", s1, s2, s3, ")"
+   end subroutine bench_gap
 
    subroutine bench_critical()
       real(wp), parameter :: alphas(3) = [0.3_wp, 0.6_wp, 1.0_wp]

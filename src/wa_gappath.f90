@@ -17,7 +17,8 @@ module wa_gappath
    use wa_models, only: model_roots, max_model_roots
    use wa_separation, only: state_mean_gap, md_no_contact_state
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
-   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end
+   use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
+      event_a_turn
    implicit none
    private
 
@@ -35,7 +36,7 @@ module wa_gappath
       gap_event_interaction_lost = 13
    integer, parameter :: max_events = 64, max_jumps = 15
    !> Gauss-Legendre nodes per quadrature panel
-   integer, parameter :: n_gauss = 12
+   integer, parameter :: n_gauss = 16
    !> The a* -> 0 end of a contact curve that does not join a no-contact state
    real(wp), parameter :: a_limit = 1.0e-15_wp
 
@@ -70,6 +71,51 @@ module wa_gappath
       real(wp) :: s1 = 0.0_wp, s2 = 0.0_wp
    end type stretch_type
 
+   !> Gauss-Legendre nodes and weights on [-1, 1], the barycentric weights of the nodes
+   !> and the differentiation matrix of the interpolating polynomial (d(j, l): weight of
+   !> value l in the derivative at node j).
+   type :: rule_type
+      integer :: n = 0
+      real(wp), allocatable :: x(:), w(:), bw(:), d(:, :)
+   end type rule_type
+
+   !> The chain under the walked stretches cut into pieces (between consecutive walked
+   !> ends and the nodes where the parameter changes kind or direction: smooth in their
+   !> variable, gbar* monotone), each covered adaptively by Gauss-Legendre panels that
+   !> hold P* and gbar* at their nodes. Shared by W* (the integrals) and the gap law
+   !> (the interpolants).
+   type :: cover_type
+      type(rule_type) :: rule
+      integer :: n_pieces = 0, n_panels = 0
+      !> piece k: chain positions s0 < s1, chain intervals i_lo..i_hi, its variable u
+      !> (var: var_* codes, with anchor and side), panels
+      !> first..last in order from s0 to s1, int P* dgbar* from s0 to s1, and P* = -Sigma0
+      !> throughout (constant_load: no panels)
+      real(wp), allocatable :: s0(:), s1(:), integral(:), anchor(:), side(:), u_start(:), &
+         u_end(:)
+      integer, allocatable :: i_lo(:), i_hi(:), first(:), last(:), var(:)
+      logical, allocatable :: constant_load(:)
+      !> panel j: [u0, u1] in its piece's variable, P* and gbar* at the nodes, gbar* at
+      !> both ends (interpolated), int P* dgbar* from u0 to u1
+      real(wp), allocatable :: u0(:), u1(:), pv(:, :), gv(:, :), g0(:), g1(:), pint(:)
+   end type cover_type
+
+   !> Accuracy asked of every panel's interpolants of P* and gbar*: the last Legendre
+   !> coefficients relative to the largest
+   real(wp), parameter :: tol_value = 1.0e-14_wp
+   !> Bisections of a piece, at most
+   integer, parameter :: max_depth = 48
+   !> Panels of one cover, at most (a bound on the work: typical covers need 10-60)
+   integer, parameter :: max_panels = 4000
+   !> The variable u of a piece: the chain parameter x (var_x); ln x where the piece
+   !> reaches towards x = 0 (a* -> 0, c* -> 0: power-log behaviour; var_log). Where a piece
+   !> in a* runs into a zone switch or an a* turn at a* = anchor (square-root behaviour
+   !> in a* there): x = anchor + side u^2 if it ends there (var_root), else
+   !> x = anchor + side e^u (var_log_distance), or x = anchor/(1 + e^-u) if it also
+   !> reaches towards 0 (var_logit).
+   integer, parameter :: var_x = 0, var_log = 1, var_root = 2, var_log_distance = 3, &
+      var_logit = 4
+
 contains
 
    !> Trace the branch, then follow approach and retraction under gap control.
@@ -98,6 +144,7 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       type(chain_type) :: ch
       type(stretch_type) :: walked(2*max_jumps + 4)
+      type(cover_type) :: cov
       integer :: n_walked, n_approach, n_nodes, n_splits
 
       call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
@@ -107,9 +154,10 @@ contains
       n_splits = 1
       if (present(nodes)) n_nodes = max(2, min(nodes, 64))
       if (present(splits)) n_splits = max(1, min(splits, 64))
-      call energy_lost(model, params, ch, walked(1:n_walked), n_nodes, n_splits, path%w_star, &
-         status, errmsg)
+      call build_cover(model, params, ch, walked(1:n_walked), n_nodes, n_splits, cov, status, &
+         errmsg)
       if (status /= wa_ok) return
+      path%w_star = energy_lost(cov, walked(1:n_walked))
       if (path%w_star < 0.0_wp) then                 ! rounding only: the terms are O(1)
          if (path%w_star < -1.0e-14_wp) then
             call set_error(wa_numerical_error, "gap_path: negative energy lost per cycle "// &
@@ -124,7 +172,8 @@ contains
    !> The gap law: P* on approach and on retraction at each mean gap gbar(k) >= 0, and
    !> the slopes dP*/dgbar* (P* = 0 and slope 0 where the surfaces do not interact; at
    !> gbar* = 0, full contact, P* at a* -> 1/2 and slope -Infinity: dP*/dgbar* ~ -1/(1/2 - a*)^2
-   !> there). Slopes by second-order differences in the curve's parameter (~1e-9).
+   !> there). P* and the slopes come from the polynomial interpolants of the panels that
+   !> also give W* (doc/theory.md, "Gap control": ~1e-13 in P*, ~1e-10 in the slopes).
    subroutine gap_law(model, params, gbar, p_approach, p_retract, dpdg_approach, &
       dpdg_retract, status, errmsg)
       integer, intent(in) :: model
@@ -137,7 +186,9 @@ contains
       type(chain_type) :: ch
       type(gap_path_type) :: path
       type(stretch_type) :: walked(2*max_jumps + 4)
+      type(cover_type) :: cov
       integer :: n_walked, n_approach, k
+      logical :: found
 
       p_approach = 0.0_wp; p_retract = 0.0_wp; dpdg_approach = 0.0_wp; dpdg_retract = 0.0_wp
       if (size(p_approach) /= size(gbar) .or. size(p_retract) /= size(gbar) .or. &
@@ -158,118 +209,20 @@ contains
       call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
          status, errmsg)
       if (status /= wa_ok) return
+      call build_cover(model, params, ch, walked(1:n_walked), n_gauss, 1, cov, status, errmsg)
+      if (status /= wa_ok) return
       do k = 1, size(gbar)
-         call law_at(walked(1:n_approach), gbar(k), p_approach(k), dpdg_approach(k))
-         if (status /= wa_ok) return
-         call law_at(walked(n_approach + 1:n_walked), gbar(k), p_retract(k), dpdg_retract(k))
-         if (status /= wa_ok) return
+         if (gbar(k) == 0.0_wp) then               ! full contact: P* ~ P_end - sqrt(2 g)
+            p_approach(k) = ch%p(ch%n); p_retract(k) = ch%p(ch%n)
+            dpdg_approach(k) = ieee_value(1.0_wp, ieee_negative_inf)
+            dpdg_retract(k) = dpdg_approach(k)
+            cycle
+         end if
+         call law_on(cov, params, ch, walked(1:n_approach), gbar(k), p_approach(k), &
+            dpdg_approach(k), found)
+         call law_on(cov, params, ch, walked(n_approach + 1:n_walked), gbar(k), p_retract(k), &
+            dpdg_retract(k), found)
       end do
-   contains
-      !> P* and dP*/dgbar* at g on the walked stretches (0, 0 where none holds g).
-      subroutine law_at(stretches, g, p, dpdg)
-         type(stretch_type), intent(in) :: stretches(:)
-         real(wp), intent(in) :: g
-         real(wp), intent(out) :: p, dpdg
-         integer :: m, j, j_lo, j_hi
-         real(wp) :: lo, hi, g_lo, g_hi, s_at
-         type(state_type) :: st
-         p = 0.0_wp; dpdg = 0.0_wp
-         if (g == 0.0_wp) then                        ! full contact: P* ~ P_end - sqrt(2 g)
-            p = ch%p(ch%n)
-            dpdg = ieee_value(dpdg, ieee_negative_inf)
-            return
-         end if
-         do m = 1, size(stretches)
-            lo = min(stretches(m)%s1, stretches(m)%s2)
-            hi = max(stretches(m)%s1, stretches(m)%s2)
-            if (hi <= lo) cycle
-            j_lo = min(int(lo), ch%n - 2) + 1
-            j_hi = min(int(hi - 1.0e-12_wp), ch%n - 2) + 1
-            do j = j_lo, j_hi
-               call g_at(max(lo, real(j - 1, wp)), g_lo)
-               if (status /= wa_ok) return
-               call g_at(min(hi, real(j, wp)), g_hi)
-               if (status /= wa_ok) return
-               if (g < min(g_lo, g_hi) .or. g > max(g_lo, g_hi)) cycle
-               if (g == ch%g(j)) then
-                  s_at = real(j - 1, wp)
-               else if (g == ch%g(j + 1)) then
-                  s_at = real(j, wp)
-               else
-                  call solve_gbar(model, params, ch, j, g, s_at, status, errmsg)
-                  if (status /= wa_ok) return
-               end if
-               call state_at_s(s_at, st)
-               if (status /= wa_ok) return
-               p = st%p_star
-               call slope(j, s_at, dpdg)
-               return
-            end do
-         end do
-      end subroutine law_at
-
-      subroutine g_at(s_pos, g)
-         real(wp), intent(in) :: s_pos
-         real(wp), intent(out) :: g
-         type(state_type) :: st
-         call state_at_s(s_pos, st)
-         g = st%gbar
-      end subroutine g_at
-
-      subroutine state_at_s(s_pos, st)
-         real(wp), intent(in) :: s_pos
-         type(state_type), intent(out) :: st
-         integer :: i
-         real(wp) :: t
-         status = wa_ok
-         i = min(int(s_pos), ch%n - 2) + 1
-         t = s_pos - real(i - 1, wp)
-         if (t <= 0.0_wp) then
-            st = chain_state(ch, i)
-         else if (t >= 1.0_wp) then
-            st = chain_state(ch, i + 1)
-         else
-            call state_at_param(model, params, ch, i, param(ch, i, t), st, status, errmsg)
-         end if
-      end subroutine state_at_s
-
-      !> dP*/dgbar* by second-order differences in the parameter of chain interval j
-      !> (central, or one-sided at the interval's ends).
-      subroutine slope(j, s_pos, dpdg)
-         integer, intent(in) :: j
-         real(wp), intent(in) :: s_pos
-         real(wp), intent(out) :: dpdg
-         real(wp), parameter :: h = 1.0e-5_wp
-         real(wp) :: t, tt(3), w(3), dp, dg
-         type(state_type) :: sk
-         integer :: k
-         dpdg = 0.0_wp
-         if (param_kind(ch, j) == 2) return             ! P* = -Sigma0 on the stretch
-         t = s_pos - real(j - 1, wp)
-         if (t - h < 0.0_wp) then
-            tt = [t, t + h, t + 2.0_wp*h]; w = [-1.5_wp, 2.0_wp, -0.5_wp]
-         else if (t + h > 1.0_wp) then
-            tt = [t, t - h, t - 2.0_wp*h]; w = [1.5_wp, -2.0_wp, 0.5_wp]
-         else
-            tt = [t - h, t, t + h]; w = [-0.5_wp, 0.0_wp, 0.5_wp]
-         end if
-         dp = 0.0_wp; dg = 0.0_wp
-         do k = 1, 3
-            if (w(k) == 0.0_wp) cycle
-            if (tt(k) <= 0.0_wp) then
-               sk = chain_state(ch, j)
-            else if (tt(k) >= 1.0_wp) then
-               sk = chain_state(ch, j + 1)
-            else
-               call state_at_param(model, params, ch, j, param(ch, j, tt(k)), sk, status, &
-                  errmsg)
-               if (status /= wa_ok) return
-            end if
-            dp = dp + w(k)*sk%p_star
-            dg = dg + w(k)*sk%gbar
-         end do
-         if (dg /= 0.0_wp) dpdg = dp/dg
-      end subroutine slope
    end subroutine gap_law
 
    ! ------------------------------------------------------------------ chain
@@ -722,50 +675,104 @@ contains
       end if
    end subroutine solve_gbar
 
-   ! ---------------------------------------------------------------- energy
+   ! ---------------------------------------------------------------- panels
 
-   !> W* = -sum over walked stretches of int P* dgbar*: the net number of traversals
-   !> of each piece of the chain times its integral (stretches walked both ways cancel
-   !> exactly). Each piece: Gauss-Legendre panels in the parameter with dgbar*/dparam
-   !> from the interpolating polynomial through the nodes; graded towards a parameter 0.
-   subroutine energy_lost(model, params, ch, walked, n_nodes, n_splits, w, status, errmsg)
+   !> Cover the walked stretches of the chain with pieces and panels (n_nodes per panel,
+   !> every piece first split into n_splits panels).
+   subroutine build_cover(model, params, ch, walked, n_nodes, n_splits, cov, status, errmsg)
       integer, intent(in) :: model, n_nodes, n_splits
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
       type(stretch_type), intent(in) :: walked(:)
-      real(wp), intent(out) :: w
+      type(cover_type), intent(out) :: cov
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       real(wp), allocatable :: cuts(:)
-      real(wp) :: lo, hi, m, integral
-      integer :: k, j, i, n_cuts
+      real(wp) :: lo, hi, x_lo, x_hi, u_lo, u_hi, du, ua, ub, ic
+      real(wp) :: pc(n_nodes), gc(n_nodes)
+      integer :: k, j, n_cuts, kind, p
+      logical :: found, near_zero
+      real(wp) :: d
 
       status = wa_ok
-      w = 0.0_wp
-      allocate (cuts(2*size(walked) + ch%n))
+      call make_rule(n_nodes, cov%rule)
+      allocate (cuts(2*size(walked) + ch%n + 2))
       n_cuts = 0
       do k = 1, size(walked)
          call put(walked(k)%s1); call put(walked(k)%s2)
       end do
-      do i = 0, ch%n - 1
-         call put(real(i, wp))
+      call put(0.0_wp); call put(real(ch%n - 1, wp))
+      do j = 2, ch%n - 1                               ! breaks of the parameter at node j
+         if (param_kind(ch, j - 1) /= param_kind(ch, j) .or. ch%event(j) == event_switch .or. &
+            ch%zone(j) /= ch%zone(j - 1) .or. ch%zone(j) /= ch%zone(j + 1) .or. &
+            (param(ch, j - 1, 1.0_wp) - param(ch, j - 1, 0.0_wp))* &
+            (param(ch, j, 1.0_wp) - param(ch, j, 0.0_wp)) <= 0.0_wp) call put(real(j - 1, wp))
       end do
       call sort(cuts(1:n_cuts))
+      allocate (cov%s0(n_cuts), cov%s1(n_cuts), cov%integral(n_cuts), cov%i_lo(n_cuts), &
+         cov%i_hi(n_cuts), cov%first(n_cuts), cov%last(n_cuts), cov%var(n_cuts), &
+         cov%anchor(n_cuts), cov%side(n_cuts), cov%constant_load(n_cuts), cov%u_start(n_cuts), &
+         cov%u_end(n_cuts))
+      call grow(cov, n_nodes, 64)
       do j = 1, n_cuts - 1
          lo = cuts(j); hi = cuts(j + 1)
          if (hi <= lo) cycle
-         m = 0.0_wp
-         do k = 1, size(walked)
-            if (min(walked(k)%s1, walked(k)%s2) <= lo .and. max(walked(k)%s1, walked(k)%s2) >= hi) &
-               m = m + sign(1.0_wp, walked(k)%s2 - walked(k)%s1)
-         end do
-         if (m == 0.0_wp) cycle
+         if (.not. any([(min(walked(k)%s1, walked(k)%s2) <= lo .and. &
+            max(walked(k)%s1, walked(k)%s2) >= hi, k=1, size(walked))])) cycle
+         cov%n_pieces = cov%n_pieces + 1
+         p = cov%n_pieces
+         cov%s0(p) = lo; cov%s1(p) = hi
+         cov%i_lo(p) = min(int(lo), ch%n - 2) + 1
+         cov%i_hi(p) = max(cov%i_lo(p), min(ceiling(hi), ch%n - 1))
+         cov%first(p) = cov%n_panels + 1; cov%last(p) = cov%n_panels
+         cov%var(p) = var_x; cov%constant_load(p) = .false.
+         cov%integral(p) = 0.0_wp
+         kind = param_kind(ch, cov%i_lo(p))
+         if (kind == 2) then                          ! P* = -Sigma0: exact
+            cov%constant_load(p) = .true.
+            cov%integral(p) = -params%sigma0*(piece_gbar(cov, ch, p, hi) - &
+               piece_gbar(cov, ch, p, lo))
+            cycle
+         end if
+         x_lo = param(ch, cov%i_lo(p), lo - real(cov%i_lo(p) - 1, wp))
+         x_hi = param(ch, cov%i_hi(p), hi - real(cov%i_hi(p) - 1, wp))
+         cov%var(p) = var_x; cov%anchor(p) = 0.0_wp; cov%side(p) = 1.0_wp
+         u_lo = x_lo; u_hi = x_hi
+         near_zero = (kind == 0 .or. kind == 1) .and. min(x_lo, x_hi) > 0.0_wp .and. &
+            min(x_lo, x_hi) < 1.0e-3_wp*abs(x_hi - x_lo)
+         found = .false.
+         if (kind == 0) call root_anchor(ch, cov%i_lo(p), cov%i_hi(p), x_lo, x_hi, &
+            cov%anchor(p), found)
+         if (found) then
+            cov%side(p) = sign(1.0_wp, 0.5_wp*(x_lo + x_hi) - cov%anchor(p))
+            d = min(abs(x_lo - cov%anchor(p)), abs(x_hi - cov%anchor(p)))
+            if (d < 1.0e-3_wp*abs(x_hi - x_lo)) then     ! ends at the anchor
+               cov%var(p) = var_root
+               u_lo = sqrt(abs(x_lo - cov%anchor(p))); u_hi = sqrt(abs(x_hi - cov%anchor(p)))
+            else if (near_zero .and. cov%side(p) < 0.0_wp) then
+               cov%var(p) = var_logit
+               u_lo = log(x_lo/(cov%anchor(p) - x_lo)); u_hi = log(x_hi/(cov%anchor(p) - x_hi))
+            else
+               cov%var(p) = var_log_distance
+               u_lo = log(abs(x_lo - cov%anchor(p))); u_hi = log(abs(x_hi - cov%anchor(p)))
+            end if
+         else if (near_zero) then
+            cov%var(p) = var_log
+            u_lo = log(x_lo); u_hi = log(x_hi)
+         end if
+         cov%u_start(p) = u_lo; cov%u_end(p) = u_hi
+         du = (u_hi - u_lo)/real(n_splits, wp)
          do k = 1, n_splits
-            call piece_integral(model, params, ch, lo + (hi - lo)*real(k - 1, wp)/n_splits, &
-               lo + (hi - lo)*real(k, wp)/n_splits, n_nodes, integral, status, errmsg)
+            ua = u_lo + du*real(k - 1, wp)
+            ub = u_lo + du*real(k, wp)
+            if (k == n_splits) ub = u_hi
+            call eval_panel(model, params, ch, cov, p, ua, ub, pc, gc, ic, status, errmsg)
             if (status /= wa_ok) return
-            w = w - m*integral
+            call adapt(model, params, ch, cov, p, ua, ub, pc, gc, ic, 0, status, errmsg)
+            if (status /= wa_ok) return
          end do
+         cov%last(p) = cov%n_panels
+         cov%integral(p) = sum(cov%pint(cov%first(p):cov%last(p)))
       end do
    contains
       subroutine put(x)
@@ -774,7 +781,375 @@ contains
          n_cuts = n_cuts + 1
          cuts(n_cuts) = x
       end subroutine put
-   end subroutine energy_lost
+   end subroutine build_cover
+
+   !> Keep the panel [ua, ub] of piece p (values pc, gc, integral ic at its nodes) if its
+   !> interpolants are resolved, else bisect it; store the kept panels in order.
+   recursive subroutine adapt(model, params, ch, cov, p, ua, ub, pc, gc, ic, depth, status, &
+         errmsg)
+      integer, intent(in) :: model, p, depth
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(cover_type), intent(inout) :: cov
+      real(wp), intent(in) :: ua, ub, pc(:), gc(:), ic
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp) :: um, pl(size(pc)), gl(size(pc)), il, pr(size(pc)), gr(size(pc)), ir
+      real(wp) :: frac
+      status = wa_ok
+      ! tolerance per panel: relative to its own values, or to the chain's scale times
+      ! its share of the piece (an end singularity then costs a few bisections), or to
+      ! the rounding of P* and gbar* (~100 ulps of the chain's largest: cancellation)
+      frac = max(tol_value*abs(ub - ua)/abs(cov%u_end(p) - cov%u_start(p)), &
+         100.0_wp*epsilon(1.0_wp))
+      if (resolved(cov%rule, pc, frac*maxval(abs(ch%p))) .and. &
+         resolved(cov%rule, gc, frac*maxval(abs(ch%g)))) then
+         call store(cov, ua, ub, pc, gc, ic)
+         return
+      end if
+      um = 0.5_wp*(ua + ub)
+      if (depth >= max_depth .or. um == ua .or. um == ub .or. cov%n_panels >= max_panels) then
+         call set_error(wa_numerical_error, "gap_path: the quadrature along the branch "// &
+            "does not converge", status, errmsg)
+         return
+      end if
+      call eval_panel(model, params, ch, cov, p, ua, um, pl, gl, il, status, errmsg)
+      if (status /= wa_ok) return
+      call eval_panel(model, params, ch, cov, p, um, ub, pr, gr, ir, status, errmsg)
+      if (status /= wa_ok) return
+      call adapt(model, params, ch, cov, p, ua, um, pl, gl, il, depth + 1, status, errmsg)
+      if (status /= wa_ok) return
+      call adapt(model, params, ch, cov, p, um, ub, pr, gr, ir, depth + 1, status, errmsg)
+   end subroutine adapt
+
+   !> The Legendre series of the values f at the rule's nodes has decayed: its last
+   !> three coefficients are below tol_value times the largest, or a few ulps of max |f|,
+   !> or tol_abs.
+   pure logical function resolved(rule, f, tol_abs)
+      type(rule_type), intent(in) :: rule
+      real(wp), intent(in) :: f(:), tol_abs
+      real(wp) :: c(rule%n), p0(rule%n), p1(rule%n), p2(rule%n), tail
+      integer :: k
+      p0 = 1.0_wp; p1 = rule%x
+      c(1) = 0.5_wp*sum(rule%w*f)
+      c(2) = 1.5_wp*sum(rule%w*f*p1)
+      do k = 2, rule%n - 1                           ! P_k by the three-term recurrence
+         p2 = (real(2*k - 1, wp)*rule%x*p1 - real(k - 1, wp)*p0)/real(k, wp)
+         c(k + 1) = 0.5_wp*real(2*k + 1, wp)*sum(rule%w*f*p2)
+         p0 = p1; p1 = p2
+      end do
+      tail = maxval(abs(c(rule%n - 2:rule%n)))
+      resolved = tail <= max(tol_value*maxval(abs(c)) + 16.0_wp*epsilon(1.0_wp)*maxval(abs(f)), &
+         tol_abs)
+   end function resolved
+
+   !> P* and gbar* at the nodes of [ua, ub] in the variable of piece p, and int P* dgbar*
+   !> from ua to ub (dgbar*/du from the interpolating polynomial through the nodes).
+   subroutine eval_panel(model, params, ch, cov, p, ua, ub, pv, gv, integral, status, errmsg)
+      integer, intent(in) :: model, p
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(cover_type), intent(in) :: cov
+      real(wp), intent(in) :: ua, ub
+      real(wp), intent(out) :: pv(:), gv(:), integral
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(state_type) :: s
+      real(wp) :: u, x
+      integer :: j, i
+      status = wa_ok
+      integral = 0.0_wp
+      do j = 1, cov%rule%n
+         u = 0.5_wp*(ua + ub) + 0.5_wp*(ub - ua)*cov%rule%x(j)
+         select case (cov%var(p))
+         case (var_log)
+            x = exp(u)
+         case (var_root)
+            x = cov%anchor(p) + cov%side(p)*u*u
+         case (var_log_distance)
+            x = cov%anchor(p) + cov%side(p)*exp(u)
+         case (var_logit)
+            x = cov%anchor(p)/(1.0_wp + exp(-u))
+         case default
+            x = u
+         end select
+         i = interval_of(ch, cov%i_lo(p), cov%i_hi(p), x)
+         call state_at_param(model, params, ch, i, x, s, status, errmsg)
+         if (status /= wa_ok) return
+         pv(j) = s%p_star; gv(j) = s%gbar
+      end do
+      integral = sum(cov%rule%w*pv*matmul(cov%rule%d, gv))
+   end subroutine eval_panel
+
+   !> The a* of the zone switch or a* turn that the case-1 stretch of pieces i_lo..i_hi
+   !> runs into next to the piece (the chain followed outwards from both ends while it
+   !> stays in case 1), when it lies beyond the piece's a* range [x_lo, x_hi] by less than
+   !> that range's width (else found = .false.).
+   pure subroutine root_anchor(ch, i_lo, i_hi, x_lo, x_hi, anchor, found)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i_lo, i_hi
+      real(wp), intent(in) :: x_lo, x_hi
+      real(wp), intent(out) :: anchor
+      logical, intent(out) :: found
+      real(wp) :: d, d_best, lo, hi
+      integer :: j, dir, k
+      found = .false.
+      anchor = 0.0_wp
+      if (ch%zone(i_lo) /= zone_inside .and. ch%zone(i_hi + 1) /= zone_inside) return
+      lo = min(x_lo, x_hi); hi = max(x_lo, x_hi)
+      d_best = hi - lo
+      do dir = -1, 1, 2
+         j = merge(i_lo, i_hi + 1, dir < 0)
+         do k = 1, ch%n
+            if (j < 1 .or. j > ch%n) exit
+            if (ch%event(j) == event_switch .or. ch%event(j) == event_a_turn) then
+               d = max(lo - ch%a(j), ch%a(j) - hi)
+               if (d >= 0.0_wp .and. d < d_best) then
+                  d_best = d; anchor = ch%a(j); found = .true.
+               end if
+               exit
+            end if
+            if (ch%zone(j) /= zone_inside) exit
+            j = j + dir
+         end do
+      end do
+   end subroutine root_anchor
+
+   !> The chain interval among i_lo..i_hi whose parameter range holds x (the nearest
+   !> end interval when x is outside by rounding).
+   pure integer function interval_of(ch, i_lo, i_hi, x) result(i)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i_lo, i_hi
+      real(wp), intent(in) :: x
+      real(wp) :: x0, x1
+      do i = i_lo, i_hi
+         x0 = param(ch, i, 0.0_wp); x1 = param(ch, i, 1.0_wp)
+         if ((x - x0)*(x - x1) <= 0.0_wp) return
+      end do
+      x0 = param(ch, i_lo, 0.0_wp)
+      x1 = param(ch, i_hi, 1.0_wp)
+      i = merge(i_lo, i_hi, abs(x - x0) <= abs(x - x1))
+   end function interval_of
+
+   subroutine store(cov, ua, ub, pv, gv, integral)
+      type(cover_type), intent(inout) :: cov
+      real(wp), intent(in) :: ua, ub, pv(:), gv(:), integral
+      integer :: j
+      if (cov%n_panels >= size(cov%u0)) call grow(cov, cov%rule%n, 2*size(cov%u0))
+      cov%n_panels = cov%n_panels + 1
+      j = cov%n_panels
+      cov%u0(j) = ua; cov%u1(j) = ub
+      cov%pv(:, j) = pv; cov%gv(:, j) = gv; cov%pint(j) = integral
+      cov%g0(j) = interpolate(cov%rule, gv, -1.0_wp)
+      cov%g1(j) = interpolate(cov%rule, gv, 1.0_wp)
+   end subroutine store
+
+   subroutine grow(cov, n_nodes, capacity)
+      type(cover_type), intent(inout) :: cov
+      integer, intent(in) :: n_nodes, capacity
+      real(wp), allocatable :: t1(:), t2(:, :)
+      integer :: m
+      m = cov%n_panels
+      if (.not. allocated(cov%u0)) then
+         allocate (cov%u0(capacity), cov%u1(capacity), cov%g0(capacity), cov%g1(capacity), &
+            cov%pint(capacity), cov%pv(n_nodes, capacity), cov%gv(n_nodes, capacity))
+         return
+      end if
+      allocate (t1(capacity)); t1(1:m) = cov%u0(1:m); call move_alloc(t1, cov%u0)
+      allocate (t1(capacity)); t1(1:m) = cov%u1(1:m); call move_alloc(t1, cov%u1)
+      allocate (t1(capacity)); t1(1:m) = cov%g0(1:m); call move_alloc(t1, cov%g0)
+      allocate (t1(capacity)); t1(1:m) = cov%g1(1:m); call move_alloc(t1, cov%g1)
+      allocate (t1(capacity)); t1(1:m) = cov%pint(1:m); call move_alloc(t1, cov%pint)
+      allocate (t2(n_nodes, capacity)); t2(:, 1:m) = cov%pv(:, 1:m); call move_alloc(t2, cov%pv)
+      allocate (t2(n_nodes, capacity)); t2(:, 1:m) = cov%gv(:, 1:m); call move_alloc(t2, cov%gv)
+   end subroutine grow
+
+   !> gbar* at position s (within its span) of constant-load piece p (linear in s there).
+   pure real(wp) function piece_gbar(cov, ch, p, s_pos) result(g)
+      type(cover_type), intent(in) :: cov
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: p
+      real(wp), intent(in) :: s_pos
+      integer :: i
+      real(wp) :: t
+      i = max(cov%i_lo(p), min(int(s_pos) + 1, cov%i_hi(p)))
+      t = s_pos - real(i - 1, wp)
+      g = ch%g(i) + t*(ch%g(i + 1) - ch%g(i))
+   end function piece_gbar
+
+   ! ---------------------------------------------------------------- energy
+
+   !> W* = -sum over walked stretches of int P* dgbar*: the net number of traversals
+   !> of each piece of the cover times its integral (stretches walked both ways cancel
+   !> exactly).
+   pure real(wp) function energy_lost(cov, walked) result(w)
+      type(cover_type), intent(in) :: cov
+      type(stretch_type), intent(in) :: walked(:)
+      real(wp) :: m
+      integer :: p, k
+      w = 0.0_wp
+      do p = 1, cov%n_pieces
+         m = 0.0_wp
+         do k = 1, size(walked)
+            if (min(walked(k)%s1, walked(k)%s2) <= cov%s0(p) .and. &
+               max(walked(k)%s1, walked(k)%s2) >= cov%s1(p)) &
+               m = m + sign(1.0_wp, walked(k)%s2 - walked(k)%s1)
+         end do
+         w = w - m*cov%integral(p)
+      end do
+   end function energy_lost
+
+   !> P* and dP*/dgbar* at gbar* = g on the walked stretches (the first that holds g);
+   !> found = .false. where none does.
+   pure subroutine law_on(cov, params, ch, stretches, g, p_out, dpdg, found)
+      type(cover_type), intent(in) :: cov
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      type(stretch_type), intent(in) :: stretches(:)
+      real(wp), intent(in) :: g
+      real(wp), intent(out) :: p_out, dpdg
+      logical, intent(out) :: found
+      integer :: m, p, j, best
+      real(wp) :: lo, hi, d, d_best, z
+      p_out = 0.0_wp; dpdg = 0.0_wp; found = .false.
+      do m = 1, size(stretches)
+         lo = min(stretches(m)%s1, stretches(m)%s2)
+         hi = max(stretches(m)%s1, stretches(m)%s2)
+         if (hi <= lo) cycle
+         best = 0; d_best = huge(1.0_wp)
+         do p = 1, cov%n_pieces
+            if (cov%s0(p) < lo .or. cov%s1(p) > hi) cycle
+            if (cov%constant_load(p)) then
+               d = outside(g, piece_gbar(cov, ch, p, cov%s0(p)), piece_gbar(cov, ch, p, cov%s1(p)))
+               if (d < d_best) then
+                  d_best = d; best = -p
+               end if
+               cycle
+            end if
+            do j = cov%first(p), cov%last(p)
+               d = outside(g, cov%g0(j), cov%g1(j))
+               if (d < d_best) then
+                  d_best = d; best = j
+               end if
+            end do
+         end do
+         if (best == 0 .or. d_best > 1.0e-12_wp*(1.0_wp + abs(g))) cycle
+         found = .true.
+         if (best < 0) then
+            p_out = -params%sigma0
+            return
+         end if
+         z = invert(cov%rule, cov%gv(:, best), g)
+         call value_slope(cov%rule, cov%pv(:, best), cov%gv(:, best), z, p_out, dpdg)
+         return
+      end do
+   contains
+      pure real(wp) function outside(x, a, b)
+         real(wp), intent(in) :: x, a, b
+         outside = max(0.0_wp, min(a, b) - x, x - max(a, b))
+      end function outside
+   end subroutine law_on
+
+   ! --------------------------------------------------- polynomial interpolants
+
+   !> Gauss-Legendre rule with n nodes, its barycentric weights and differentiation matrix.
+   pure subroutine make_rule(n, rule)
+      integer, intent(in) :: n
+      type(rule_type), intent(out) :: rule
+      integer :: j, l
+      rule%n = n
+      allocate (rule%x(n), rule%w(n), rule%bw(n), rule%d(n, n))
+      call gauss_legendre(rule%x, rule%w)
+      do j = 1, n
+         rule%bw(j) = 1.0_wp
+         do l = 1, n
+            if (l /= j) rule%bw(j) = rule%bw(j)/(rule%x(j) - rule%x(l))
+         end do
+      end do
+      rule%d = 0.0_wp
+      do j = 1, n
+         do l = 1, n
+            if (l == j) cycle
+            rule%d(j, l) = (rule%bw(l)/rule%bw(j))/(rule%x(j) - rule%x(l))
+            rule%d(j, j) = rule%d(j, j) - rule%d(j, l)
+         end do
+      end do
+   end subroutine make_rule
+
+   !> The interpolating polynomial through (rule%x, f) at z in [-1, 1] (barycentric).
+   pure real(wp) function interpolate(rule, f, z) result(v)
+      type(rule_type), intent(in) :: rule
+      real(wp), intent(in) :: f(:), z
+      real(wp) :: num, den, t
+      integer :: j
+      num = 0.0_wp; den = 0.0_wp
+      do j = 1, rule%n
+         if (z == rule%x(j)) then
+            v = f(j)
+            return
+         end if
+         t = rule%bw(j)/(z - rule%x(j))
+         num = num + t*f(j); den = den + t
+      end do
+      v = num/den
+   end function interpolate
+
+   !> The interpolant of p and dp/dg = (dp/dz)/(dg/dz) at z.
+   pure subroutine value_slope(rule, p, g, z, v, dpdg)
+      type(rule_type), intent(in) :: rule
+      real(wp), intent(in) :: p(:), g(:), z
+      real(wp), intent(out) :: v, dpdg
+      real(wp) :: zz, dp, dg, gz, t, den
+      integer :: j
+      zz = z
+      if (any(zz == rule%x)) zz = zz + 8.0_wp*epsilon(zz)*merge(-1.0_wp, 1.0_wp, zz > 0.0_wp)
+      v = interpolate(rule, p, zz)
+      gz = interpolate(rule, g, zz)
+      dp = 0.0_wp; dg = 0.0_wp; den = 0.0_wp
+      do j = 1, rule%n                               ! Schneider-Werner derivative
+         t = rule%bw(j)/(zz - rule%x(j))
+         den = den + t
+         dp = dp + t*(v - p(j))/(zz - rule%x(j))
+         dg = dg + t*(gz - g(j))/(zz - rule%x(j))
+      end do
+      dpdg = 0.0_wp
+      if (dg /= 0.0_wp) dpdg = dp/dg
+   end subroutine value_slope
+
+   !> z in [-1, 1] where the (monotone) interpolant of g equals target: bisection
+   !> safeguarded Newton-secant (regula falsi with the Illinois rule).
+   pure real(wp) function invert(rule, g, target) result(z)
+      type(rule_type), intent(in) :: rule
+      real(wp), intent(in) :: g(:), target
+      real(wp) :: za, zb, fa, fb, fz
+      integer :: it, side
+      za = -1.0_wp; zb = 1.0_wp
+      fa = interpolate(rule, g, za) - target
+      fb = interpolate(rule, g, zb) - target
+      if (fa == 0.0_wp) then
+         z = za; return
+      else if (fb == 0.0_wp .or. fa*fb > 0.0_wp) then
+         z = merge(za, zb, abs(fa) < abs(fb)); return
+      end if
+      side = 0
+      z = za
+      do it = 1, 200
+         z = (za*fb - zb*fa)/(fb - fa)
+         if (.not. (z > za .and. z < zb)) z = 0.5_wp*(za + zb)
+         fz = interpolate(rule, g, z) - target
+         if (fz == 0.0_wp .or. zb - za <= 4.0_wp*epsilon(1.0_wp)) exit
+         if (fz*fb > 0.0_wp) then
+            zb = z; fb = fz
+            if (side == 1) fa = 0.5_wp*fa
+            side = 1
+         else
+            za = z; fa = fz
+            if (side == -1) fb = 0.5_wp*fb
+            side = -1
+         end if
+         if (abs(zb - za) <= 2.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(z))) exit
+      end do
+   end function invert
 
    pure subroutine sort(x)
       real(wp), intent(inout) :: x(:)
@@ -791,82 +1166,6 @@ contains
          x(j + 1) = t
       end do
    end subroutine sort
-
-   !> int P* dgbar* from s = lo to s = hi within one chain interval.
-   subroutine piece_integral(model, params, ch, lo, hi, n_nodes, integral, status, errmsg)
-      integer, intent(in) :: model, n_nodes
-      type(params_type), intent(in) :: params
-      type(chain_type), intent(in) :: ch
-      real(wp), intent(in) :: lo, hi
-      real(wp), intent(out) :: integral
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      integer :: i, k, n_panels
-      real(wp) :: x0, x1, y0, y1, part
-      status = wa_ok
-      integral = 0.0_wp
-      i = min(int(0.5_wp*(lo + hi)), ch%n - 2) + 1
-      x0 = param(ch, i, lo - real(i - 1, wp))
-      x1 = param(ch, i, hi - real(i - 1, wp))
-      if (param_kind(ch, i) == 2) then                ! P* = -Sigma0 exactly
-         integral = -params%sigma0*(ch%g(i + 1) - ch%g(i))*(hi - lo)
-         return
-      end if
-if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
-         ! graded panels towards the parameter's zero (a* -> 0 or c* -> 0)
-         ! halving until the panel next to the end is as narrow as the end's distance
-         ! from 0 (at most 60 halvings)
-         n_panels = 60
-         if (min(x0, x1) > 0.0_wp) n_panels = min(60, 2 + &
-            ceiling(log(abs(x1 - x0)/min(x0, x1))/log(2.0_wp)))
-         do k = 1, n_panels
-            if (x0 < x1) then
-               y0 = x0 + (x1 - x0)*0.5_wp**(n_panels - k + 1); y1 = x0 + (x1 - x0)*0.5_wp**(n_panels - k)
-               if (k == 1) y0 = x0
-            else
-               y0 = x1 + (x0 - x1)*0.5_wp**(n_panels - k); y1 = x1 + (x0 - x1)*0.5_wp**(n_panels - k + 1)
-               if (k == 1) y1 = x1
-            end if
-            call panel(y0, y1, part)
-            if (status /= wa_ok) return
-            integral = integral + part
-         end do
-      else
-         call panel(x0, x1, part)
-         integral = part
-      end if
-   contains
-      subroutine panel(u0, u1, res)
-         real(wp), intent(in) :: u0, u1
-         real(wp), intent(out) :: res
-         real(wp) :: xg(n_nodes), wg(n_nodes), x(n_nodes), pv(n_nodes), gv(n_nodes), &
-            bw(n_nodes), dg
-         type(state_type) :: s
-         integer :: j, l
-         res = 0.0_wp
-         if (u1 == u0) return
-         call gauss_legendre(xg, wg)
-         do j = 1, n_nodes
-            x(j) = 0.5_wp*(u0 + u1) + 0.5_wp*(u1 - u0)*xg(j)
-            call state_at_param(model, params, ch, i, x(j), s, status, errmsg)
-            if (status /= wa_ok) return
-            pv(j) = s%p_star; gv(j) = s%gbar
-         end do
-         do j = 1, n_nodes                              ! barycentric weights in xg
-            bw(j) = 1.0_wp
-            do l = 1, n_nodes
-               if (l /= j) bw(j) = bw(j)/(xg(j) - xg(l))
-            end do
-         end do
-         do j = 1, n_nodes                              ! d gbar / d xg at the nodes
-            dg = 0.0_wp
-            do l = 1, n_nodes
-               if (l /= j) dg = dg + (bw(l)/bw(j))*(gv(l) - gv(j))/(xg(j) - xg(l))
-            end do
-            res = res + wg(j)*pv(j)*dg
-         end do
-      end subroutine panel
-   end subroutine piece_integral
 
    !> Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n).
    pure subroutine gauss_legendre(x, w)
@@ -945,6 +1244,7 @@ if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
       character(len=*), intent(inout), optional :: errmsg
       real(wp) :: t, c_guess
       integer :: zone
+      logical :: done
       if (param_kind(ch, i) == 1) then
          call md_no_contact_state(params, min(x, 0.5_wp - epsilon(x)), s, status, errmsg)
          return
@@ -958,6 +1258,8 @@ if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
       end if
       t = 0.5_wp
       if (ch%a(i + 1) /= ch%a(i)) t = (x - ch%a(i))/(ch%a(i + 1) - ch%a(i))
+      call local_state(model, params, ch, i, x, t, s, done, status, errmsg)
+      if (done .or. status /= wa_ok) return
       c_guess = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
       zone = ch%zone(i + 1)
       if (ch%event(i + 1) == event_switch .or. zone == zone_full_contact) zone = ch%zone(i)
@@ -966,6 +1268,63 @@ if (min(x0, x1) < 1.0e-3_wp*abs(x1 - x0) .or. min(x0, x1) == 0.0_wp) then
          zone = ch%zone(i + 1)
       call solve_at_a(model, params, x, c_guess, zone, s, status, errmsg)
    end subroutine state_at_param
+
+   !> The state at a* = x on chain interval i (t: its position in the interval) without
+   !> a root scan, where the interval allows: case 2 in closed form (c* = 1/2), case 1 of
+   !> DW and MD by Brent on F(x, y) in y within the interval's y range (widened at most
+   !> three times). done = .false.: not applicable here (the caller scans for roots).
+   subroutine local_state(model, params, ch, i, x, t, s, done, status, errmsg)
+      use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+      use wa_curve, only: curve_case2_load
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: x, t
+      type(state_type), intent(out) :: s
+      logical, intent(out) :: done
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(brent_type) :: solver
+      real(wp) :: y_guess, width, lo, hi, f_lo, f_hi, y
+      logical :: conv
+      integer :: iter, zi, zj
+      done = .false.
+      status = wa_ok
+      if (.not. (model == model_dw .or. model == model_md) .or. params%sigma0 <= 0.0_wp) return
+      zi = ch%zone(i); zj = ch%zone(i + 1)
+      if ((zi == zone_whole_period .or. zi == zone_full_contact) .and. &
+         (zj == zone_whole_period .or. zj == zone_full_contact) .and. &
+         .not. (zi == zone_full_contact .and. zj == zone_full_contact)) then
+         s%a_star = x; s%c_star = 0.5_wp; s%gap_width = 0.5_wp - x
+         s%p_star = curve_case2_load(model, params, x)
+         s%zone_case = zone_whole_period
+      else if (zi == zone_inside .and. zj == zone_inside .and. ch%event(i) /= event_switch &
+         .and. ch%event(i + 1) /= event_switch .and. ch%y(i) < 0.0_wp .and. ch%y(i + 1) < 0.0_wp) then
+         y_guess = ch%y(i) + t*(ch%y(i + 1) - ch%y(i))
+         width = abs(ch%y(i + 1) - ch%y(i)) + 1.0e-9_wp*abs(y_guess)
+         do iter = 1, 4
+            lo = y_guess - width; hi = min(y_guess + width, 0.0_wp)
+            f_lo = curve_residual(model, params, x, lo)
+            f_hi = curve_residual(model, params, x, hi)
+            if (f_lo <= 0.0_wp .and. f_hi >= 0.0_wp) exit
+            width = 4.0_wp*width
+         end do
+         if (.not. (f_lo <= 0.0_wp .and. f_hi >= 0.0_wp)) return
+         call brent_init(solver, lo, f_lo, hi, f_hi, 1.0e-16_wp)
+         do iter = 1, 200
+            call brent_propose(solver, y, conv)
+            if (conv) exit
+            call brent_accept(solver, curve_residual(model, params, x, y))
+         end do
+         if (.not. conv) return
+         s = curve_state(model, params, x, solver%b)
+         if (s%zone_case /= zone_inside .or. .not. ieee_is_finite(s%p_star)) return
+      else
+         return
+      end if
+      call state_mean_gap(model, params, s, s%gbar, status, errmsg)
+      done = status == wa_ok
+   end subroutine local_state
 
    !> The case-1 state of chain interval i at curve variable y: Brent on F(a*, y) in a*
    !> over the interval's a* range, widened until F changes sign.
