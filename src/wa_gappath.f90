@@ -795,15 +795,28 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       real(wp) :: um, pl(size(pc)), gl(size(pc)), il, pr(size(pc)), gr(size(pc)), ir
-      real(wp) :: frac
+      real(wp) :: frac, x1, xn, noise_p, noise_g
       status = wa_ok
       ! tolerance per panel: relative to its own values, or to the chain's scale times
       ! its share of the piece (an end singularity then costs a few bisections), or to
       ! the rounding of P* and gbar* (~100 ulps of the chain's largest: cancellation)
       frac = max(tol_value*abs(ub - ua)/abs(cov%u_end(p) - cov%u_start(p)), &
          100.0_wp*epsilon(1.0_wp))
-      if (resolved(cov%rule, pc, frac*maxval(abs(ch%p))) .and. &
-         resolved(cov%rule, gc, frac*maxval(abs(ch%g)))) then
+      ! (or the panel spans a few hundred ulps of x: the rounding of x itself then
+      ! decides the values and bisecting cannot help; its share of W* is that small).
+      ! The rounding of x moves a steep P* or gbar* by eps |x df/dx|: a floor too.
+      x1 = x_of(cov, p, 0.5_wp*(ua + ub) + 0.5_wp*(ub - ua)*cov%rule%x(1))
+      xn = x_of(cov, p, 0.5_wp*(ua + ub) + 0.5_wp*(ub - ua)*cov%rule%x(size(pc)))
+      if (xn /= x1) then
+         noise_p = 100.0_wp*epsilon(1.0_wp)*abs(x1)*abs(pc(size(pc)) - pc(1))/abs(xn - x1)
+         noise_g = 100.0_wp*epsilon(1.0_wp)*abs(x1)*abs(gc(size(pc)) - gc(1))/abs(xn - x1)
+      else
+         noise_p = huge(1.0_wp); noise_g = huge(1.0_wp)
+      end if
+      if ((resolved(cov%rule, pc, max(frac*maxval(abs(ch%p)), noise_p)) .and. &
+         resolved(cov%rule, gc, max(frac*maxval(abs(ch%g)), noise_g))) .or. &
+         abs(x_of(cov, p, ub) - x_of(cov, p, ua)) <= &
+         256.0_wp*epsilon(1.0_wp)*abs(x_of(cov, p, ua))) then
          call store(cov, ua, ub, pc, gc, ic)
          return
       end if
@@ -861,18 +874,7 @@ contains
       integral = 0.0_wp
       do j = 1, cov%rule%n
          u = 0.5_wp*(ua + ub) + 0.5_wp*(ub - ua)*cov%rule%x(j)
-         select case (cov%var(p))
-         case (var_log)
-            x = exp(u)
-         case (var_root)
-            x = cov%anchor(p) + cov%side(p)*u*u
-         case (var_log_distance)
-            x = cov%anchor(p) + cov%side(p)*exp(u)
-         case (var_logit)
-            x = cov%anchor(p)/(1.0_wp + exp(-u))
-         case default
-            x = u
-         end select
+         x = x_of(cov, p, u)
          i = interval_of(ch, cov%i_lo(p), cov%i_hi(p), x)
          call state_at_param(model, params, ch, i, x, s, status, errmsg)
          if (status /= wa_ok) return
@@ -914,6 +916,25 @@ contains
          end do
       end do
    end subroutine root_anchor
+
+   !> The chain parameter x at u in the variable of piece p.
+   pure real(wp) function x_of(cov, p, u) result(x)
+      type(cover_type), intent(in) :: cov
+      integer, intent(in) :: p
+      real(wp), intent(in) :: u
+      select case (cov%var(p))
+      case (var_log)
+         x = exp(u)
+      case (var_root)
+         x = cov%anchor(p) + cov%side(p)*u*u
+      case (var_log_distance)
+         x = cov%anchor(p) + cov%side(p)*exp(u)
+      case (var_logit)
+         x = cov%anchor(p)/(1.0_wp + exp(-u))
+      case default
+         x = u
+      end select
+   end function x_of
 
    !> The chain interval among i_lo..i_hi whose parameter range holds x (the nearest
    !> end interval when x is outside by rounding).
