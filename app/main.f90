@@ -52,7 +52,14 @@ program wavyadhesion_cli
          call run_path(opts, params)
       end if
    case ("critical")
-      call run_critical(opts, params, rows_failed)
+      if (allocated(opts%control)) then
+         if (opts%control == "gap") call run_gap_critical(opts, params, rows_failed)
+      end if
+      if (.not. allocated(opts%control)) then
+         call run_critical(opts, params, rows_failed)
+      else if (opts%control == "load") then
+         call run_critical(opts, params, rows_failed)
+      end if
    case ("map")
       call run_map(opts)
    case ("profile")
@@ -399,6 +406,82 @@ contains
          n_failed, " of ", size(p_fc), " rows failed (written with NaN forces); exit status 1"
    end subroutine run_critical
 
+   !> critical --control gap: the critical values of mean-gap control over alpha x mu
+   !> (gap_critical_sweep); failing rows as in run_critical (NaN, reason on stderr).
+   subroutine run_gap_critical(opts, si_params, rows_failed)
+      type(cli_options), intent(in) :: opts
+      !> alpha and mu from the SI options (when given)
+      type(params_type), intent(in) :: si_params
+      logical, intent(out) :: rows_failed
+      real(wp), allocatable :: alpha(:), mu(:), values(:, :, :)
+      integer, allocatable :: row_stat(:)
+      character(len=256), allocatable :: row_msg(:)
+      character(len=256) :: msg
+      character(len=24) :: t_fail, t_all
+      character(len=400), allocatable :: notes(:)
+      type(params_type) :: params
+      integer :: i, j, status, n_failed
+
+      alpha = [0.3_wp]
+      mu = [1.0_wp]
+      if (si_given(opts)) then
+         alpha = [si_params%alpha]
+         mu = [si_params%mu]
+      end if
+      if (allocated(opts%alpha)) alpha = opts%alpha
+      if (allocated(opts%mu)) mu = opts%mu
+      msg = ""
+      do j = 1, size(alpha)                   ! every argument checked before any work
+         call new_params(alpha(j), 1.0_wp, params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
+      do i = 1, size(mu)
+         call new_params(1.0_wp, mu(i), params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
+      allocate (values(gap_critical_count, size(mu), size(alpha)), row_stat(size(mu)), &
+         row_msg(size(mu)))
+      n_failed = 0
+      do j = 1, size(alpha)
+         call gap_critical_sweep(opts%model, alpha(j), mu, values(:, :, j), status, msg, &
+            row_stat, row_msg)
+         do i = 1, size(mu)
+            if (row_stat(i) == wa_ok) cycle
+            n_failed = n_failed + 1
+            write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+               format_real(alpha(j))//", mu = "//format_real(mu(i))//": "// &
+               status_message(row_stat(i))//": "//trim(row_msg(i))// &
+               " (row written with NaN values)"
+         end do
+      end do
+      rows_failed = n_failed > 0
+      write (t_fail, '(i0)') n_failed
+      write (t_all, '(i0)') size(mu)*size(alpha)
+      notes = [character(len=400) :: &
+         "g_touch: gbar* where the approach first feels the surface (P* = 0 above)", &
+         "P_jump_in, a_jump_in: P* and a* where the approach lands when it jumps at", &
+         "  g_touch (a jump keeps gbar*); 0 and 0: no jump (P* leaves 0 gradually)", &
+         "g_contact: gbar* where contact is first made on the approach", &
+         "P_min, g_P_min, a_P_min: the most tensile load on the retraction and its", &
+         "  gbar* and a* (jkr: -Infinity at full contact)", &
+         "g_contact_lost, P_contact_lost: gbar* where contact is lost for good on the", &
+         "  retraction and P* of the last state with contact", &
+         "g_interaction_lost: gbar* beyond which P* = 0 on the retraction"]
+      if (n_failed > 0) notes = [character(len=400) :: notes, trim(t_fail)//" of "// &
+         trim(t_all)//" rows failed: their values are NaN (reasons on standard error)"]
+      call write_header(out, opts%format, "critical values under mean-gap control "// &
+         "(approach, retraction)", model_name(opts%model), &
+         columns="alpha mu "//gap_critical_names, notes=notes)
+      do j = 1, size(alpha)
+         do i = 1, size(mu)
+            call write_row(out, opts%format, [alpha(j), mu(i), values(:, i, j)])
+         end do
+      end do
+      if (rows_failed) write (error_unit, '(a,i0,a,i0,a)') "wavyadhesion: critical: ", &
+         n_failed, " of ", size(mu)*size(alpha), " rows failed (written with NaN values); "// &
+         "exit status 1"
+   end subroutine run_gap_critical
+
    !> map: the boundary curves of the adhesion map, rows "boundary alpha mu" (boundary:
    !> the integer code, meanings in the header), each curve in increasing alpha.
    subroutine run_map(opts)
@@ -601,7 +684,7 @@ contains
          "  gaplaw    P* on approach and retraction and dP*/dgbar* on a uniform grid of", &
          "            mean gaps: --gbar-range LO:HI:N", &
          "  critical  P_fc and P_pf over --alpha A[,A...] and --mu U[,U...] or", &
-         "            --mu-range LO:HI:N[:log]", &
+         "            --mu-range LO:HI:N[:log] (--control gap: those of mean-gap control)", &
          "  map       adhesion map (dw, md): boundaries between mechanisms as rows", &
          "            'boundary alpha mu' (--alpha-range, default 0.01:10:200:log;", &
          "            --mu-range, default 1e-3:1e3:60:log)", &
@@ -619,7 +702,7 @@ contains
          "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
          "                     Dugdale zone half-width of a state without contact)", &
          "  --n N              profile: number of points, in [2, 100000] (default 201)", &
-         "  --control C        load (default) | gap (path)", &
+         "  --control C        load (default) | gap (path, critical)", &
          "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &

@@ -128,8 +128,9 @@ contains
          error = "--gbar-range is only for the gaplaw subcommand"
       else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then
          error = "gaplaw needs --gbar-range LO:HI:N"
-      else if (given(opts, "--control") .and. opts%command /= "path") then
-         error = "--control is only for the path subcommand"
+      else if (given(opts, "--control") .and. opts%command /= "path" .and. &
+         opts%command /= "critical") then
+         error = "--control is only for the path and critical subcommands"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then

@@ -296,6 +296,95 @@ int wa_adhesion_map(int model, int n_alpha, const double *alpha, double mu_lo, d
                     int capacity, int *boundary_code, double *alpha_out, double *mu_out,
                     int *n_out);
 
+/* Gap (mean-gap) control (doc/c-api.md, "Gap control"): approach from far apart to full
+   contact and retraction back, with gbar* imposed; jumps keep gbar*. */
+
+/* Stages of a gap path (gap_stage_approach, gap_stage_retraction in wa_gappath). */
+#define WA_STAGE_APPROACH 1    /* gbar* falling from far apart to full contact */
+#define WA_STAGE_RETRACTION 2  /* gbar* rising from full contact to far apart */
+
+/* Event codes of a gap path (gap_event_* in wa_gappath; the `event` column of
+   `wavyadhesion path --control gap`; 3-6 mean what WA_EVENT_3-6 mean). */
+#define WA_GAP_EVENT_JUMP_START 3             /* a jump at constant gbar* starts here */
+#define WA_GAP_EVENT_JUMP_END 4               /* ... and lands here */
+#define WA_GAP_EVENT_FULL_CONTACT_REACHED 5   /* full contact reached (gbar* = 0) */
+#define WA_GAP_EVENT_FULL_CONTACT_LEFT 6      /* full contact left on retraction */
+#define WA_GAP_EVENT_TOUCH 10                 /* first interaction on approach (P* = 0) */
+#define WA_GAP_EVENT_CONTACT_MADE 11          /* MD: the Dugdale zone's state meets the
+                                                 contact curve on approach */
+#define WA_GAP_EVENT_CONTACT_LOST 12          /* contact lost on retraction (a* -> 0) */
+#define WA_GAP_EVENT_INTERACTION_LOST 13      /* P* = 0 beyond this gbar* */
+
+/* The events of the gap-controlled approach (stage WA_STAGE_APPROACH) and retraction
+   (WA_STAGE_RETRACTION), in order: stage, event (WA_GAP_EVENT_*), zone case, a*, c*, P*
+   and gbar* of each (a jump's start and end share gbar*; events on the P* = 0 states
+   far apart have a* = c* = P* = 0 and zone case WA_ZONE_NO_CONTACT). *W_star receives
+   the energy lost per cycle W* = -oint P* dgbar* (units p* Delta; >= 0), *W_fraction
+   W* / (pi alpha^2/2), *g_touch the gbar* of the first interaction (1, except for MD).
+   *n_events receives the number of events (at most 64). When it exceeds `capacity` the
+   first `capacity` events are written, nothing beyond, the three scalars too, and
+   WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays asks for the count).
+   On any other failure *n_events = 0 and *W_star = *W_fraction = *g_touch = NaN (each
+   one that is not NULL) and the arrays are not written. */
+int wa_gap_path(int model, double alpha, double mu, int capacity,
+                int *stage, int *event, int *zone_case, double *a_star, double *c_star,
+                double *P_star, double *gbar, int *n_events,
+                double *W_star, double *W_fraction, double *g_touch);
+
+/* As wa_gap_path, with the message of wa_equilibrium_msg. */
+int wa_gap_path_msg(int model, double alpha, double mu, int capacity,
+                    int *stage, int *event, int *zone_case, double *a_star, double *c_star,
+                    double *P_star, double *gbar, int *n_events,
+                    double *W_star, double *W_fraction, double *g_touch,
+                    char *message, int message_capacity);
+
+/* The gap law at n mean gaps gbar[i] (each finite and >= 0): P* after approaching from
+   far apart (P_approach) and after retracting from full contact (P_retract), and the
+   slopes dP* / dgbar* (P* = 0 and slope 0 where the surfaces do not interact; at gbar* = 0,
+   full contact, P* is the full-contact load and the slopes are -INFINITY). n = 0 (NULL
+   arrays allowed) only checks the arguments and the cycle. WA_INVALID_ARGUMENT: model,
+   alpha, mu or a gbar[i] invalid (the message names gbar[i]), n < 0, an array NULL while
+   n > 0. On any failure, when n > 0, every element of each output array that is not NULL
+   is NaN. Never WA_CAPACITY_TOO_SMALL. */
+int wa_gap_law(int model, double alpha, double mu, int n, const double *gbar,
+               double *P_approach, double *P_retract, double *dPdg_approach,
+               double *dPdg_retract);
+
+/* As wa_gap_law, with the message of wa_equilibrium_msg. */
+int wa_gap_law_msg(int model, double alpha, double mu, int n, const double *gbar,
+                   double *P_approach, double *P_retract, double *dPdg_approach,
+                   double *dPdg_retract, char *message, int message_capacity);
+
+/* Critical values under gap control: indices into the values[] of wa_gap_critical
+   (the order of gap_critical_values in wa_gapcritical and of `wavyadhesion critical
+   --control gap`). A jump under gap control keeps gbar*: the jump-in starts and lands at
+   g_touch. */
+#define WA_GAP_CRITICAL_COUNT 10
+#define WA_GAP_CRITICAL_G_TOUCH 0            /* approach: gbar* of the first interaction */
+#define WA_GAP_CRITICAL_P_JUMP_IN 1          /* P* where the approach lands when it jumps
+                                                at g_touch (0: no jump) */
+#define WA_GAP_CRITICAL_A_JUMP_IN 2          /* a* there (0: no jump, or MD landing on
+                                                the states without contact) */
+#define WA_GAP_CRITICAL_G_CONTACT 3          /* gbar* where contact is first made */
+#define WA_GAP_CRITICAL_P_MIN 4              /* retraction: the most tensile load (equal
+                                                to P_pf of wa_critical_forces in every case
+                                                tested; JKR: -INFINITY) */
+#define WA_GAP_CRITICAL_G_P_MIN 5            /* its gbar* (JKR: 0) */
+#define WA_GAP_CRITICAL_A_P_MIN 6            /* its a* (JKR: 1/2) */
+#define WA_GAP_CRITICAL_G_CONTACT_LOST 7     /* gbar* where contact is lost for good */
+#define WA_GAP_CRITICAL_P_CONTACT_LOST 8     /* P* of the last state with contact */
+#define WA_GAP_CRITICAL_G_INTERACTION_LOST 9 /* gbar* beyond which P* = 0 */
+
+/* values[WA_GAP_CRITICAL_COUNT] receives the critical values under gap control (indices
+   WA_GAP_CRITICAL_*); all finite except P_MIN of JKR (-INFINITY). On any failure every
+   element of values (when it is not NULL) is NaN; NULL values gives WA_INVALID_ARGUMENT.
+   Never WA_CAPACITY_TOO_SMALL. */
+int wa_gap_critical(int model, double alpha, double mu, double *values);
+
+/* As wa_gap_critical, with the message of wa_equilibrium_msg. */
+int wa_gap_critical_msg(int model, double alpha, double mu, double *values, char *message,
+                        int message_capacity);
+
 #ifdef __cplusplus
 }
 #endif

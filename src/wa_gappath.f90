@@ -27,6 +27,8 @@ module wa_gappath
    public :: gap_event_jump_start, gap_event_jump_end, gap_event_full_contact_reached, &
       gap_event_full_contact_left, gap_event_touch, gap_event_contact_made, &
       gap_event_contact_lost, gap_event_interaction_lost
+   !> (appended for gap_critical in wa_gapcritical)
+   public :: gap_cycle_critical
 
    integer, parameter :: gap_stage_approach = 1, gap_stage_retraction = 2
    !> Event codes of a gap-controlled path (3-6 as in wa_branch)
@@ -1467,5 +1469,55 @@ contains
       end if
       call add(path, stage, event, s)
    end subroutine add_at
+
+   ! ------------------------------------------------ critical values (appended)
+
+   !> The events of the gap-controlled cycle (as gap_path, without W*: path%w_star = 0),
+   !> the most tensile load on the retraction, p_min, with its gbar* and a* (the least
+   !> P* over the retraction's events and the chain points its walked stretches cover:
+   !> along a stretch P* is extremal only at a fold of P*, a point of the traced branch
+   !> located to ~1e-11 in a*, or at a corner, a point too), and g_contact, the gbar*
+   !> where contact (a* > 0, or MD's contact-made event) is first made on the approach.
+   subroutine gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
+         status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(gap_path_type), intent(out) :: path
+      real(wp), intent(out) :: p_min, g_min, a_min, g_contact
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(chain_type) :: ch
+      type(stretch_type) :: walked(2*max_jumps + 4)
+      integer :: n_walked, n_approach, k, i
+      real(wp) :: lo, hi
+
+      p_min = huge(1.0_wp); g_min = 0.0_wp; a_min = 0.0_wp; g_contact = -1.0_wp
+      call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
+         status, errmsg)
+      if (status /= wa_ok) return
+      if (.not. ch%joined) g_contact = path%g_touch  ! the chain is all contact states
+      do k = 1, path%n
+         if (path%stage(k) == gap_stage_approach .and. g_contact < 0.0_wp .and. &
+            (path%event(k) == gap_event_contact_made .or. path%a_star(k) > 0.0_wp)) &
+            g_contact = path%gbar(k)
+         if (path%stage(k) /= gap_stage_retraction) cycle
+         if (path%p_star(k) < p_min) then
+            p_min = path%p_star(k); g_min = path%gbar(k); a_min = path%a_star(k)
+         end if
+      end do
+      do k = n_approach + 1, n_walked
+         lo = min(walked(k)%s1, walked(k)%s2)
+         hi = max(walked(k)%s1, walked(k)%s2)
+         do i = max(1, ceiling(lo) + 1), min(ch%n, floor(hi) + 1)
+            if (ch%p(i) < p_min) then
+               p_min = ch%p(i); g_min = ch%g(i); a_min = ch%a(i)
+            end if
+         end do
+      end do
+      if (.not. (p_min < huge(1.0_wp) .and. g_contact >= 0.0_wp)) call set_error( &
+         wa_numerical_error, "gap_path: the cycle has no retraction or makes no contact", &
+         status, errmsg)
+   end subroutine gap_cycle_critical
 
 end module wa_gappath

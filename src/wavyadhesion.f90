@@ -30,6 +30,8 @@ module wavyadhesion
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost
+   use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
+      gap_critical_values, gap_critical_count, gap_critical_names
    implicit none
    private
 
@@ -63,5 +65,7 @@ module wavyadhesion
       map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
 
    public :: wa_version
+   public :: gap_critical_type, gap_critical, gap_critical_sweep, gap_critical_values, &
+      gap_critical_count, gap_critical_names
 
 end module wavyadhesion

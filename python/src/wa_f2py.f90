@@ -793,3 +793,61 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    end if
    status = int(stat, c_int)
 end subroutine fa_gap_law
+
+!> Critical values under gap control for one alpha over n values of mu, in one call of
+!> wa_gapcritical::gap_critical_sweep: values(:, i) in the order of gap_critical_names.
+!> Model and alpha are checked first, then every mu: the first invalid mu is reported
+!> through ifail (1-based), nothing is computed and every value is NaN. A mu whose cycle
+!> fails gets NaN in its column and its status in row_status; status/message are those
+!> of the first failing row.
+subroutine fa_gap_critical_sweep(n, model, alpha, mu, values, row_status, ifail, status, &
+      message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_gapcritical, only: gap_critical_sweep, gap_critical_count
+   implicit none
+   !> Number of mu values
+   integer(c_int), intent(in) :: n
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameters, >= 0
+   real(c_double), intent(in) :: mu(n)
+   !> The 10 critical values of each mu (gap_critical_names)
+   real(c_double), intent(out) :: values(10, n)
+   !> Status of each row (wa_ok where its values were computed)
+   integer(c_int), intent(out) :: row_status(n)
+   !> Index of the invalid mu (1-based), 0 when every mu is valid
+   integer(c_int), intent(out) :: ifail
+   !> wa_ok or the first failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   integer, allocatable :: row_stat(:)
+   integer :: i, stat
+
+   message = ""
+   ifail = 0
+   values = ieee_value(1.0_c_double, ieee_quiet_nan)
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, 0.0_c_double, params, stat, message)
+   do i = 1, n
+      if (stat /= wa_ok) exit
+      call new_params(alpha, mu(i), params, stat, message)
+      if (stat /= wa_ok) ifail = i
+   end do
+   row_status = int(stat, c_int)
+   if (stat == wa_ok .and. n > 0 .and. gap_critical_count == 10) then
+      allocate (row_stat(n))
+      call gap_critical_sweep(int(model), alpha, mu, values, stat, message, row_stat)
+      row_status = int(row_stat, c_int)
+   end if
+   status = int(stat, c_int)
+end subroutine fa_gap_critical_sweep
+

@@ -23,6 +23,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 """
 
 from ._map import AdhesionMap, Boundary, adhesion_map, boundary_meaning
+from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._core import (
     EVENTS,
     MECHANISMS,
@@ -63,6 +64,9 @@ __version__ = _dist_version("wavyadhesion")
 del _dist_version
 
 __all__ = [
+    "GAP_CRITICAL_FIELDS",
+    "GapCritical",
+    "gap_critical",
     "AdhesionMap",
     "Boundary",
     "adhesion_map",

@@ -1070,6 +1070,215 @@ static void test_profile(void) {
    }
 }
 
+/* Gap control: wa_gap_path (the events `wavyadhesion path --control gap --model md
+   --alpha 0.3 --mu 1` prints), wa_gap_law against the path's events and the Westergaard
+   closed form, wa_gap_critical against both and against P_pf; capacity, NULL pointers
+   and invalid arguments with the failure values written. */
+static void test_gap_path(void) {
+   static const int want_stage[14] = {1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2};
+   static const int want_event[14] = {10, 3, 4, 11, 3, 4, 5, 6, 3, 4, 12, 3, 4, 13};
+   double a[16], c[16], p[16], g[16], w = -1, wf = -1, gt = -1;
+   int stage[16], ev[16], zc[16], n = -1, k, st, m, same = 1;
+   char msg[256];
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   CHECK(st == WA_OK && n == 14, "md gap path (0.3, 1): st %d n %d (want 14)", st, n);
+   for (k = 0; k < 14 && n == 14; k++)
+      same = same && stage[k] == want_stage[k] && ev[k] == want_event[k];
+   CHECK(same, "md gap path: stages and events as the CLI prints them");
+   CHECK(n == 14 && close_to(gt, 1.3187975707547834, 1e-12) && g[0] == gt &&
+            close_to(p[3], -9.0116543396273133e-02, 1e-10) && zc[3] == WA_ZONE_NO_CONTACT &&
+            close_to(g[13], 1.4080166215419854, 1e-10) && g[1] == g[0] && close_to(g[8], g[9], 1e-10) &&
+            close_to(p[6], 5.5654721873560731e-01, 1e-12) && g[6] == 0.0,
+         "md gap path values: g_touch %.17g P %.17g g %.17g", gt, p[3], g[13]);
+   CHECK(w > 0 && close_to(wf, w / (pi * 0.3 * 0.3 / 2), 1e-14), "W* %g, fraction %g", w, wf);
+   for (k = 0; k < 16; k++) {
+      a[k] = -7;
+      ev[k] = -7;
+   }
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 3, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n == 14 && ev[2] == 4 && ev[3] == -7 && a[3] == -7 &&
+            w > 0 && close_to(gt, 1.3187975707547834, 1e-12),
+         "gap path capacity 3: st %d n %d", st, n);
+   st = wa_gap_path(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, NULL,
+                    NULL, &n, &w, &wf, &gt);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n == 6 && w == 0.0 && wf == 0.0 && gt == 1.0,
+         "westergaard gap path count: st %d n %d W* %g g_touch %g", st, n, w, gt);
+   st = wa_gap_path(WA_MODEL_WESTERGAARD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w,
+                    &wf, &gt);
+   CHECK(st == WA_OK && n == 6 && ev[3] == WA_GAP_EVENT_CONTACT_LOST && g[3] == 1.0 &&
+            stage[3] == WA_STAGE_RETRACTION && ev[0] == WA_GAP_EVENT_TOUCH,
+         "westergaard gap path: contact lost at gbar* = 1");
+   for (m = 0; m < 4; m++) {
+      int md = models[m];
+      st = wa_gap_path(md, 0.3, 5.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+      CHECK(st == WA_OK && n >= 6 && ev[0] == WA_GAP_EVENT_TOUCH &&
+               ev[n - 1] == WA_GAP_EVENT_INTERACTION_LOST && w >= 0,
+            "model %d gap path (0.3, 5): st %d n %d", md, st, n);
+      for (k = 0; k < n && st == WA_OK; k++)
+         if (ev[k] == WA_GAP_EVENT_JUMP_START)
+            CHECK(k + 1 < n && ev[k + 1] == WA_GAP_EVENT_JUMP_END && close_to(g[k + 1], g[k], 1e-10),
+                  "model %d: jump %d keeps gbar*", md, k);
+      n = 3;
+      w = wf = gt = 0;
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, NULL, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT && isnan(w) && isnan(wf) && isnan(gt),
+            "NULL n_events");
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, NULL, &wf, &gt) ==
+               WA_INVALID_ARGUMENT && n == 0 && isnan(wf) && isnan(gt),
+            "NULL W_star");
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, NULL) ==
+               WA_INVALID_ARGUMENT,
+            "NULL g_touch");
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, NULL, a, c, p, g, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT,
+            "NULL zone_case");
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, NULL, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT,
+            "NULL gbar");
+      CHECK(wa_gap_path(md, 0.3, 1.0, -1, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT,
+            "capacity -1");
+      n = 3;
+      CHECK(wa_gap_path(md, 0.0, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT && n == 0 && isnan(w) && isnan(gt),
+            "model %d alpha = 0", md);
+      CHECK(wa_gap_path(md, 0.3, -1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT,
+            "mu < 0");
+      CHECK(wa_gap_path(md, NAN, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+               WA_INVALID_ARGUMENT,
+            "alpha NaN");
+   }
+   CHECK(wa_gap_path(7, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+            WA_INVALID_ARGUMENT,
+         "model 7");
+   st = wa_gap_path_msg(WA_MODEL_MD, 0.3, 1.0, 3, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt,
+                        msg, sizeof msg);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && strstr(msg, "14 events"), "gap path message: '%s'",
+         msg);
+   st = wa_gap_path_msg(WA_MODEL_MD, 0.3, -2.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf,
+                        &gt, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu"), "gap path mu message: '%s'", msg);
+   st = wa_gap_path_msg(WA_MODEL_DW, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt,
+                        msg, sizeof msg);
+   CHECK(st == WA_OK && msg[0] == '\0', "empty message on success");
+}
+
+static void test_gap_law(void) {
+   double gb[8], pa[8], pr[8], da[8], dr[8], a[16], c[16], p[16], g[16], w, wf, gt;
+   int stage[16], ev[16], zc[16], n, k, st;
+   char msg[256];
+   /* Westergaard: gbar* = 1 - P + P ln P on approach and retraction alike */
+   for (k = 0; k < 6; k++) gb[k] = 0.1 + 0.15 * k;
+   gb[6] = 1.5;
+   gb[7] = 0.0;
+   st = wa_gap_law(WA_MODEL_WESTERGAARD, 0.3, 1.0, 8, gb, pa, pr, da, dr);
+   CHECK(st == WA_OK, "westergaard gap law: st %d", st);
+   for (k = 0; k < 6 && st == WA_OK; k++)
+      CHECK(pa[k] == pr[k] && close_to(1 - pa[k] + pa[k] * log(pa[k]), gb[k], 1e-9),
+            "westergaard gap law at %g: P %.17g", gb[k], pa[k]);
+   CHECK(pa[6] == 0 && pr[6] == 0 && da[6] == 0 && pa[7] == 1.0 && isinf(da[7]) && da[7] < 0,
+         "westergaard: P* = 0 apart, full contact at gbar* = 0");
+   /* MD: the law at the gbar* of retraction events that are not jumps gives their P* */
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   gb[0] = g[10];       /* contact lost (gradual) */
+   gb[1] = g[3];        /* contact made on approach (gradual) */
+   gb[2] = 0.5 * (g[0] + g[13]);   /* between touch and interaction lost: apart on approach */
+   st = wa_gap_law(WA_MODEL_MD, 0.3, 1.0, 3, gb, pa, pr, da, dr);
+   CHECK(st == WA_OK && close_to(pr[0], p[10], 1e-9) && close_to(pa[1], p[3], 1e-9) &&
+            pa[2] == 0.0 && pr[2] < 0.0,
+         "md gap law at the events: %.17g %.17g / %.17g %.17g", pr[0], p[10], pa[1], p[3]);
+   /* n = 0 checks the arguments only; failures write NaN everywhere */
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL) == WA_OK, "n = 0");
+   CHECK(wa_gap_law(WA_MODEL_DW, -0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL) ==
+            WA_INVALID_ARGUMENT,
+         "n = 0 still checks alpha");
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, -1, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+         "n = -1");
+   gb[0] = 0.5;
+   gb[1] = -0.25;
+   pa[0] = pr[0] = da[0] = dr[0] = 3;
+   st = wa_gap_law_msg(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "gbar[1]") && isnan(pa[0]) && isnan(pr[0]) &&
+            isnan(da[0]) && isnan(dr[1]),
+         "gbar[1] < 0: st %d '%s'", st, msg);
+   gb[1] = NAN;
+   st = wa_gap_law_msg(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "gbar[1]"), "gbar[1] NaN: '%s'", msg);
+   gb[1] = INFINITY;
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+         "gbar[1] infinite");
+   gb[1] = 0.25;
+   pa[0] = 3;
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, NULL, da, dr) == WA_INVALID_ARGUMENT &&
+            isnan(pa[0]) && isnan(pa[1]),
+         "NULL P_retract, P_approach NaN");
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, NULL, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+         "NULL gbar");
+   st = wa_gap_law_msg(WA_MODEL_MD, 0.3, NAN, 2, gb, pa, pr, da, dr, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu") && isnan(pr[1]), "mu NaN: '%s'", msg);
+   CHECK(wa_gap_law(5, 0.3, 1.0, 2, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT, "model 5");
+}
+
+static void test_gap_critical(void) {
+   double v[WA_GAP_CRITICAL_COUNT], a[16], c[16], p[16], g[16], w, wf, gt, fc, pf, gb[1],
+      pa[1], pr[1], da[1], dr[1];
+   int stage[16], ev[16], zc[16], n, k, m, st;
+   static const double mus[3] = {0.3, 1.0, 5.0};
+   char msg[256];
+   st = wa_gap_critical(WA_MODEL_WESTERGAARD, 0.3, 1.0, v);
+   CHECK(st == WA_OK && v[WA_GAP_CRITICAL_G_TOUCH] == 1.0 && v[WA_GAP_CRITICAL_P_JUMP_IN] == 0 &&
+            v[WA_GAP_CRITICAL_G_CONTACT] == 1.0 && v[WA_GAP_CRITICAL_G_CONTACT_LOST] == 1.0 &&
+            v[WA_GAP_CRITICAL_G_INTERACTION_LOST] == 1.0 && v[WA_GAP_CRITICAL_P_MIN] == 0.0,
+         "westergaard: no jump, contact made and lost at gbar* = 1, P_min = 0");
+   st = wa_gap_critical(WA_MODEL_JKR, 0.3, 1.0, v);
+   CHECK(st == WA_OK && isinf(v[WA_GAP_CRITICAL_P_MIN]) && v[WA_GAP_CRITICAL_P_MIN] < 0 &&
+            v[WA_GAP_CRITICAL_G_P_MIN] == 0.0 && v[WA_GAP_CRITICAL_P_JUMP_IN] < 0,
+         "jkr: P_min = -inf at gbar* = 0, a jump-in");
+   for (m = 2; m < 4; m++)
+      for (k = 0; k < 3; k++) {
+         int i, last_loss = -1;
+         st = wa_gap_critical(models[m], 0.3, mus[k], v);
+         wa_gap_path(models[m], 0.3, mus[k], 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+         wa_critical_forces(models[m], 0.3, mus[k], &fc, &pf);
+         CHECK(st == WA_OK && v[WA_GAP_CRITICAL_G_TOUCH] == gt &&
+                  v[WA_GAP_CRITICAL_G_INTERACTION_LOST] == g[n - 1],
+               "model %d mu %g: g_touch and interaction lost are the path's", models[m], mus[k]);
+         CHECK(close_to(v[WA_GAP_CRITICAL_P_MIN], pf, 1e-12),
+               "model %d mu %g: P_min %.17g = P_pf %.17g", models[m], mus[k],
+               v[WA_GAP_CRITICAL_P_MIN], pf);
+         for (i = 0; i < n; i++) {
+            if (stage[i] == WA_STAGE_RETRACTION)
+               CHECK(p[i] >= v[WA_GAP_CRITICAL_P_MIN], "P_min below every retraction event");
+            if (ev[i] == WA_GAP_EVENT_CONTACT_LOST ||
+                (ev[i] == WA_GAP_EVENT_JUMP_START && a[i] > 0 && a[i + 1] == 0))
+               if (stage[i] == WA_STAGE_RETRACTION) last_loss = i;
+         }
+         CHECK(last_loss >= 0 && v[WA_GAP_CRITICAL_G_CONTACT_LOST] == g[last_loss] &&
+                  v[WA_GAP_CRITICAL_P_CONTACT_LOST] == p[last_loss],
+               "model %d mu %g: contact lost is the path's event", models[m], mus[k]);
+         if (ev[1] == WA_GAP_EVENT_JUMP_START)
+            CHECK(v[WA_GAP_CRITICAL_P_JUMP_IN] == p[2] && v[WA_GAP_CRITICAL_A_JUMP_IN] == a[2],
+                  "jump-in lands on the path's event");
+         /* the gap law on retraction at gbar*(P_min) is P_min */
+         gb[0] = v[WA_GAP_CRITICAL_G_P_MIN];
+         st = wa_gap_law(models[m], 0.3, mus[k], 1, gb, pa, pr, da, dr);
+         CHECK(st == WA_OK && close_to(pr[0], v[WA_GAP_CRITICAL_P_MIN], 1e-8),
+               "model %d mu %g: gap law at gbar*(P_min) %.17g vs %.17g", models[m], mus[k],
+               pr[0], v[WA_GAP_CRITICAL_P_MIN]);
+      }
+   for (k = 0; k < WA_GAP_CRITICAL_COUNT; k++) v[k] = 1;
+   CHECK(wa_gap_critical(WA_MODEL_DW, -1.0, 1.0, v) == WA_INVALID_ARGUMENT && isnan(v[0]) &&
+            isnan(v[WA_GAP_CRITICAL_COUNT - 1]),
+         "alpha < 0: NaN values");
+   CHECK(wa_gap_critical(WA_MODEL_DW, 0.3, 1.0, NULL) == WA_INVALID_ARGUMENT, "NULL values");
+   CHECK(wa_gap_critical(-1, 0.3, 1.0, v) == WA_INVALID_ARGUMENT && isnan(v[3]), "model -1");
+   st = wa_gap_critical_msg(WA_MODEL_MD, 0.3, INFINITY, v, msg, sizeof msg);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu") && isnan(v[4]), "mu inf: '%s'", msg);
+   st = wa_gap_critical_msg(WA_MODEL_MD, 0.3, 1.0, v, msg, sizeof msg);
+   CHECK(st == WA_OK && msg[0] == '\0', "empty message on success");
+}
+
 int main(void) {
    test_version();
    test_closed_forms();
@@ -1096,6 +1305,9 @@ int main(void) {
    test_adhesion_map();
    test_gap_functions();
    test_profile();
+   test_gap_path();
+   test_gap_law();
+   test_gap_critical();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

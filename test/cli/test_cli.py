@@ -582,3 +582,44 @@ def test_gaplaw_usage_errors(cli, args, needle):
     assert res.returncode == 2
     assert needle in res.stderr
     assert res.stdout == ""
+
+
+def test_critical_control_gap_columns_and_identities(cli):
+    # issue 11 item 3: critical values under mean-gap control
+    res = run(cli, "critical", "--control", "gap", "--model", "md", "--alpha", "0.3",
+              "--mu", "1,5", "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == [
+        "alpha", "mu", "g_touch", "P_jump_in", "a_jump_in", "g_contact", "P_min", "g_P_min",
+        "a_P_min", "g_contact_lost", "P_contact_lost", "g_interaction_lost"]
+    load = rows(run(cli, "critical", "--model", "md", "--alpha", "0.3", "--mu", "1,5",
+                    "--format", "csv").stdout)
+    for gap_row, load_row in zip(table, load):
+        # the most tensile load on retraction is the load-control pull-off
+        assert float(gap_row["P_min"]) == pytest.approx(float(load_row["P_pf"]), rel=1e-12)
+    path = rows(run(cli, "path", "--control", "gap", "--model", "md", "--alpha", "0.3",
+                    "--mu", "1", "--format", "csv").stdout)
+    assert float(table[0]["g_touch"]) == float(path[0]["gbar"])
+    assert float(table[0]["g_interaction_lost"]) == float(path[-1]["gbar"])
+    header = run(cli, "critical", "--control", "gap").stdout
+    for name in ("g_touch:", "P_min, g_P_min, a_P_min:", "g_interaction_lost:"):
+        assert f"# {name}" in header
+
+
+def test_critical_control_gap_westergaard_and_jkr(cli):
+    west = rows(run(cli, "critical", "--control", "gap", "--model", "westergaard",
+                    "--format", "csv").stdout)[0]
+    assert float(west["g_touch"]) == 1.0 and float(west["P_jump_in"]) == 0.0
+    assert float(west["g_contact_lost"]) == 1.0 and float(west["P_min"]) == 0.0
+    jkr = rows(run(cli, "critical", "--control", "gap", "--model", "jkr",
+                   "--format", "csv").stdout)[0]
+    assert jkr["P_min"] == "-Infinity"
+
+
+def test_critical_control_gap_bad_input(cli):
+    res = run(cli, "critical", "--control", "gap", "--mu", "1,-2", check=False)
+    assert res.returncode == 2 and "mu" in res.stderr and res.stdout == ""
+    res = run(cli, "critical", "--control", "gap", "--alpha", "nan", check=False)
+    assert res.returncode == 2 and "alpha" in res.stderr
+    res = run(cli, "critical", "--control", "shear", check=False)
+    assert res.returncode == 2 and "--control" in res.stderr

@@ -19,7 +19,9 @@
  *    is NULL or its capacity <= 0, "" on success, a reason on failure;
  *  - the same call twice (the plain and the _msg variant) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
- *    against wa_critical_forces, the closed-form loads against their formulas.
+ *    against wa_critical_forces, the closed-form loads against their formulas, wa_gap_critical
+ *    against wa_gap_path (g_touch, interaction lost), wa_critical_forces (P_min <= P_pf) and
+ *    wa_gap_law (P_retract at gbar*(P_min) is P_min; P* = 0 beyond the interaction).
  * Every call runs in a forked child watched by the parent: a call that exceeds the time
  * limit is killed and reported as a hang, a crash as a crash; the run resumes after it.
  *
@@ -59,17 +61,20 @@ const char *wa_version(void);
 enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
    F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION,
-   F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, N_FAMILY
+   F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, F_GAP_PATH, F_GAP_LAW,
+   F_GAP_CRITICAL, N_FAMILY
 };
 /* Function ids: a family and whether the _msg variant is called. */
 #define N_FN (2 * N_FAMILY)
 static const char *family_name[N_FAMILY] = {
    "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
-   "wa_version", "wa_equilibrium_gap", "wa_roots_gap", "wa_trace_branch_gap", "wa_profile"};
-static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1};
+   "wa_version", "wa_equilibrium_gap", "wa_roots_gap", "wa_trace_branch_gap", "wa_profile",
+   "wa_gap_path", "wa_gap_law", "wa_gap_critical"};
+static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md). */
-static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1, 24, 20, 1, 12};
+static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1, 24, 20, 1, 12,
+                                             3, 2, 2};
 
 /* ----------------------------------------------------------- violation kinds */
 
@@ -255,7 +260,7 @@ typedef struct {
 } call_t;
 
 /* Output buffers with guards (static: BIG elements each, only touched pages count). */
-#define N_DBUF 4 /* wa_trace_branch_gap: a*, c*, P*, gbar */
+#define N_DBUF 5 /* wa_trace_branch_gap: a*, c*, P*, gbar; wa_gap_law: gbar and 4 outputs */
 static double dbuf[N_DBUF][GUARD + BIG + GUARD];
 static int ibuf[3][GUARD + BIG + GUARD];
 static double dscalar[3][1 + 2 * GUARD];
@@ -417,6 +422,24 @@ static void make_repro(call_t *c) {
               ptr_name(c, 0, "x"), ptr_name(c, 1, "t"), ptr_name(c, 2, "h"), msgpart);
       break;
    }
+   case F_GAP_PATH:
+      sprintf(c->repro, "wa_gap_path%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, "
+              "%s%s)", sfx, c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
+              ptr_name(c, 0, "stage"), ptr_name(c, 1, "event"), ptr_name(c, 2, "zone"),
+              ptr_name(c, 3, "a"), ptr_name(c, 4, "c"), ptr_name(c, 5, "P"),
+              ptr_name(c, 6, "g"), ptr_name(c, 7, "&n"), ptr_name(c, 8, "&W"),
+              ptr_name(c, 9, "&Wf"), ptr_name(c, 10, "&g_touch"), msgpart);
+      break;
+   case F_GAP_LAW:
+      sprintf(c->repro, "wa_gap_law%s(%d, %s, %s, %s, %s, %s, %s, %s, %s%s) [gbar: make_gbar]",
+              sfx, c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
+              ptr_name(c, 0, "gbar"), ptr_name(c, 1, "Pa"), ptr_name(c, 2, "Pr"),
+              ptr_name(c, 3, "da"), ptr_name(c, 4, "dr"), msgpart);
+      break;
+   case F_GAP_CRITICAL:
+      sprintf(c->repro, "wa_gap_critical%s(%d, %s, %s, %s%s)", sfx, c->model, cd(a1, c->alpha),
+              cd(a2, c->mu), ptr_name(c, 0, "values"), msgpart);
+      break;
    case F_CRITICAL_SWEEP:
       if (c->n_mu > 0 && !(c->null_mask & 1u)) {
          strcpy(mu, "(double[]){");
@@ -458,7 +481,8 @@ static void gen_call(long index, call_t *c) {
    c->msg = has_msg[k] && unif(&r) < 0.5;
    valid = unif(&r) < 0.5; /* half the calls: every argument valid, pointers too */
    c->model = valid ? below(&r, 4) : gen_model(&r);
-   if (((k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP) || k == F_TRACE_BRANCH_GAP) &&
+   if (((k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP) || k == F_TRACE_BRANCH_GAP ||
+        k >= F_GAP_PATH) &&
        unif(&r) < 0.5) {
       /* the slow functions: typical parameters more often */
       c->alpha = log_unif(&r, 1e-2, 10.0);
@@ -491,6 +515,15 @@ static void gen_call(long index, call_t *c) {
       for (u = 0; u < 8; u++)
          c->mus[u] = unif(&r) < 0.7 || valid ? log_unif(&r, 1e-2, 30.0)
                                              : gen_param(&r, 1e-3, 1e3, 1);
+   }
+   if (k == F_GAP_PATH && c->null_mask)       /* eleven pointers */
+      c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 11) : (unsigned)next_u64(&r) & 0x7FFu;
+   if (k == F_GAP_LAW) {
+      static const int nn[] = {0, 1, 2, 3, 5, 8, 17, 64, -1, INT_MIN};
+      u2 = unif(&r);
+      c->capacity = u2 < 0.9 ? nn[below(&r, 8)] : nn[8 + below(&r, 2)];
+      if (valid && c->capacity < 0) c->capacity = 8;
+      c->x_bad = !valid && unif(&r) < 0.15;
    }
    if (k == F_PROFILE) {
       static const int nn[] = {0, 1, 2, 3, 5, 8, 17, 64, 256, -1, INT_MIN};
@@ -1069,6 +1102,175 @@ static void check_profile(const call_t *c, int st, int invalid) {
    }
 }
 
+/* wa_gap_path[_msg]: stage, event, zone case in ibuf[0..2]; a*, c*, P*, gbar in
+   dbuf[0..3]; n in iscalar[0]; W*, W* fraction, g_touch in dscalar[0..2]. */
+static int run_gap_path(const call_t *c, int msg) {
+   fill_buffers(c->capacity);
+   lib_call();
+   if (msg)
+      return wa_gap_path_msg(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
+                             P(2, I(2)), P(3, D(0)), P(4, D(1)), P(5, D(2)), P(6, D(3)),
+                             P(7, IS(0)), P(8, DS(0)), P(9, DS(1)), P(10, DS(2)), MSG(c),
+                             c->msgcap);
+   return wa_gap_path(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
+                      P(2, I(2)), P(3, D(0)), P(4, D(1)), P(5, D(2)), P(6, D(3)), P(7, IS(0)),
+                      P(8, DS(0)), P(9, DS(1)), P(10, DS(2)));
+}
+
+static int ok_gap_event(int e) {
+   return (e >= WA_GAP_EVENT_JUMP_START && e <= WA_GAP_EVENT_FULL_CONTACT_LEFT) ||
+          (e >= WA_GAP_EVENT_TOUCH && e <= WA_GAP_EVENT_INTERACTION_LOST);
+}
+
+static void check_gap_path(const call_t *c, int st, int invalid) {
+   int n = *IS(0), k, m;
+   double w = *DS(0), wf = *DS(1), gt = *DS(2);
+   unsigned nm = c->null_mask;
+   check_status(c, st, 0x3F, invalid);
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) {
+      if ((!(nm & 0x80u) && n != 0) || (!(nm & 0x100u) && !isnan(w)) ||
+          (!(nm & 0x200u) && !isnan(wf)) || (!(nm & 0x400u) && !isnan(gt)))
+         violation(c, K_FAIL_OUTPUT, "status %d: n_events %d W* %.17g %.17g g_touch %.17g "
+                   "(want 0, NaN)", st, n, w, wf, gt);
+      if (c->capacity > 0) check_untouched(c, 4, 3, 0, c->capacity);
+      return;
+   }
+   if (nm & 0x780u) return;
+   if (n < 1 || n > 64 || (st == WA_OK && n > c->capacity) ||
+       (st == WA_CAPACITY_TOO_SMALL && n <= c->capacity))
+      violation(c, K_COUNT, "status %d with n_events %d, capacity %d", st, n, c->capacity);
+   if (!(isfinite(w) && w >= 0 && isfinite(wf) && wf >= 0 && isfinite(gt) && gt >= 1.0 - 1e-12))
+      violation(c, K_NONFINITE, "status %d: W* %.17g fraction %.17g g_touch %.17g", st, w, wf,
+                gt);
+   if (n < 0) return;
+   m = n < c->capacity ? n : c->capacity;
+   if (m > FILL) m = FILL;
+   for (k = 0; k < m; k++) {
+      int sg = I(0)[k], e = I(1)[k], z = I(2)[k];
+      double a = D(0)[k], cs = D(1)[k], p = D(2)[k], g = D(3)[k];
+      if (!isfinite(a) || !isfinite(cs) || !isfinite(p) || !(isfinite(g) && g >= 0)) {
+         violation(c, K_NONFINITE, "event %d of %d: a* %.17g c* %.17g P* %.17g gbar %.17g", k,
+                   n, a, cs, p, g);
+         break;
+      }
+      if ((sg != WA_STAGE_APPROACH && sg != WA_STAGE_RETRACTION) || !ok_gap_event(e) ||
+          !ok_state(a, cs, z) || (k > 0 && sg < I(0)[k - 1]) ||
+          (k == 0 && (e != WA_GAP_EVENT_TOUCH || g != gt)) ||
+          (k == n - 1 && e != WA_GAP_EVENT_INTERACTION_LOST) ||
+          /* a jump keeps gbar*: 1e-10 in the unit tests; 1e-6 here, where JKR at alpha ~
+             1e11 lands near a* = 1/2, where gbar*(a*) is too steep for 1e-10 */
+          (k > 0 && e == WA_GAP_EVENT_JUMP_END && I(1)[k - 1] == WA_GAP_EVENT_JUMP_START &&
+           !(fabs(g - D(3)[k - 1]) <= 1e-6 * (1 + g)))) {
+         violation(c, K_STATE, "event %d of %d: stage %d event %d zone %d a* %.17g c* %.17g "
+                   "gbar %.17g", k, n, sg, e, z, a, cs, g);
+         break;
+      }
+   }
+   if (c->capacity >= 0) check_untouched(c, 4, 3, m, c->capacity);
+}
+
+/* wa_gap_law[_msg]: gbar in dbuf[0] (read only), P_approach, P_retract, dPdg_approach,
+   dPdg_retract in dbuf[1..4]; n = capacity. */
+static double law_g[FILL];
+
+/* The gbar* of a wa_gap_law call: mostly in [0, 3], exact 0 and 1, far, tiny, and (x_bad)
+   one NaN, infinity or negative value. */
+static void make_gbar(const call_t *c, double *g, int n) {
+   rng_t r;
+   int i;
+   r.s = opt_seed ^ ((uint64_t)c->index * 0x94D049BB133111EBULL) ^ 0x2545F4914F6CDD1DULL;
+   for (i = 0; i < n; i++) {
+      double u = unif(&r);
+      if (u < 0.6) g[i] = 3.0 * unif(&r);
+      else if (u < 0.7) g[i] = 0.0;
+      else if (u < 0.8) g[i] = 1.0;
+      else if (u < 0.9) g[i] = log_unif(&r, DBL_TRUE_MIN, 1e-3);
+      else g[i] = log_unif(&r, 1.0, 1e300);
+   }
+   if (c->x_bad && n > 0) {
+      static const double bad[] = {NAN, INFINITY, -INFINITY, -1.0, -DBL_TRUE_MIN};
+      g[below(&r, n)] = bad[below(&r, 5)];
+   }
+}
+
+static int run_gap_law(const call_t *c, int msg) {
+   int n = c->capacity > 0 ? c->capacity : 0;
+   fill_buffers(n);
+   make_gbar(c, D(0), n);
+   memcpy(law_g, D(0), n * sizeof(double));
+   lib_call();
+   if (msg)
+      return wa_gap_law_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
+                            P(2, D(2)), P(3, D(3)), P(4, D(4)), MSG(c), c->msgcap);
+   return wa_gap_law(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
+                     P(2, D(2)), P(3, D(3)), P(4, D(4)));
+}
+
+static void check_gap_law(const call_t *c, int st, int invalid) {
+   int n = c->capacity > 0 ? c->capacity : 0, k, j;
+   unsigned nm = c->null_mask;
+   check_status(c, st, 0x2F, invalid);
+   if (!(nm & 1u) && memcmp(D(0), law_g, n * sizeof(double)) != 0)
+      violation(c, K_OVERRUN, "the input gbar was modified");
+   for (k = 0; k < n; k++) {
+      for (j = 1; j <= 4; j++) {
+         double v = D(j)[k];
+         if (nm & (1u << j)) continue;
+         if (st != WA_OK) {
+            if (!isnan(v)) {
+               violation(c, K_FAIL_OUTPUT, "status %d, output %d point %d: %.17g (want NaN)",
+                         st, j, k, v);
+               return;
+            }
+         } else if (!(isfinite(v) || (j >= 3 && law_g[k] == 0 && v == -INFINITY))) {
+            violation(c, K_NONFINITE, "output %d point %d (gbar %.17g): %.17g", j, k,
+                      law_g[k], v);
+            return;
+         }
+      }
+   }
+}
+
+/* wa_gap_critical[_msg]: values in dbuf[0] (WA_GAP_CRITICAL_COUNT elements). */
+static int run_gap_critical(const call_t *c, int msg) {
+   fill_buffers(WA_GAP_CRITICAL_COUNT);
+   lib_call();
+   if (msg)
+      return wa_gap_critical_msg(c->model, c->alpha, c->mu, P(0, D(0)), MSG(c), c->msgcap);
+   return wa_gap_critical(c->model, c->alpha, c->mu, P(0, D(0)));
+}
+
+static void check_gap_critical(const call_t *c, int st, int invalid) {
+   int k;
+   const double *v = D(0);
+   check_status(c, st, 0x2F, invalid);
+   if (c->null_mask & 1u) return;
+   for (k = 0; k < WA_GAP_CRITICAL_COUNT; k++) {
+      if (st != WA_OK && !isnan(v[k])) {
+         violation(c, K_FAIL_OUTPUT, "status %d: values[%d] %.17g (want NaN)", st, k, v[k]);
+         return;
+      }
+      if (st == WA_OK && !isfinite(v[k]) &&
+          !(k == WA_GAP_CRITICAL_P_MIN && c->model == WA_MODEL_JKR && v[k] == -INFINITY)) {
+         violation(c, K_NONFINITE, "values[%d] %.17g", k, v[k]);
+         return;
+      }
+   }
+   if (st == WA_OK &&
+       !(v[WA_GAP_CRITICAL_G_TOUCH] >= 1.0 - 1e-12 && v[WA_GAP_CRITICAL_G_CONTACT] >= 0 &&
+         v[WA_GAP_CRITICAL_G_CONTACT] <= v[WA_GAP_CRITICAL_G_TOUCH] * (1 + 1e-12) &&
+         v[WA_GAP_CRITICAL_P_JUMP_IN] <= 0 && v[WA_GAP_CRITICAL_A_JUMP_IN] >= 0 &&
+         v[WA_GAP_CRITICAL_A_JUMP_IN] <= 0.5 && v[WA_GAP_CRITICAL_G_P_MIN] >= 0 &&
+         v[WA_GAP_CRITICAL_A_P_MIN] >= 0 && v[WA_GAP_CRITICAL_A_P_MIN] <= 0.5 &&
+         v[WA_GAP_CRITICAL_P_MIN] <= v[WA_GAP_CRITICAL_P_CONTACT_LOST] &&
+         v[WA_GAP_CRITICAL_P_MIN] <= 0 &&
+         v[WA_GAP_CRITICAL_G_CONTACT_LOST] <= v[WA_GAP_CRITICAL_G_INTERACTION_LOST] &&
+         v[WA_GAP_CRITICAL_G_TOUCH] <= v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * (1 + 1e-12)))
+      violation(c, K_STATE, "values g_touch %.17g P_jump_in %.17g g_contact %.17g P_min %.17g "
+                "g_contact_lost %.17g P_contact_lost %.17g g_interaction_lost %.17g",
+                v[0], v[1], v[3], v[4], v[7], v[8], v[9]);
+}
+
 /* ------------------------------------------------------------ one call */
 
 /* Does the header call these arguments invalid (WA_INVALID_ARGUMENT expected)? */
@@ -1103,6 +1305,14 @@ static int is_invalid(const call_t *c) {
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
              !valid_a(c->a) || !(c->cs >= 0 && c->cs <= 0.5) || cap < 0 ||
              (cap > 0 && ((nm & 7u) || c->x_bad));
+   case F_GAP_PATH:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
+             (nm & 0x780u) || cap < 0 || (cap > 0 && (nm & 0x7Fu));
+   case F_GAP_LAW:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) || cap < 0 ||
+             (cap > 0 && ((nm & 31u) || c->x_bad));
+   case F_GAP_CRITICAL:
+      return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) || (nm & 1u);
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
                    (c->n_mu > 0 && (nm & 31u));
@@ -1137,6 +1347,9 @@ static int run_family(const call_t *c, int msg) {
    case F_ROOTS_GAP: return run_roots(c, msg);
    case F_TRACE_BRANCH_GAP: return run_branch(c, msg);
    case F_PROFILE: return run_profile(c, msg);
+   case F_GAP_PATH: return run_gap_path(c, msg);
+   case F_GAP_LAW: return run_gap_law(c, msg);
+   case F_GAP_CRITICAL: return run_gap_critical(c, msg);
    }
    return -1;
 }
@@ -1153,13 +1366,22 @@ static void check_family(const call_t *c, int st, int invalid) {
    case F_ROOTS_GAP: check_roots(c, st, invalid); break;
    case F_TRACE_BRANCH_GAP: check_branch(c, st, invalid); break;
    case F_PROFILE: check_profile(c, st, invalid); break;
+   case F_GAP_PATH: check_gap_path(c, st, invalid); break;
+   case F_GAP_LAW: check_gap_law(c, st, invalid); break;
+   case F_GAP_CRITICAL: check_gap_critical(c, st, invalid); break;
    }
 }
 
 static int used_elements(const call_t *c, int st) {
    int n, f = c->family;
    if (f == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
-   if (f == F_PROFILE) return c->capacity > 0 ? c->capacity : 0;
+   if (f == F_PROFILE || f == F_GAP_LAW) return c->capacity > 0 ? c->capacity : 0;
+   if (f == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
+   if (f == F_GAP_PATH) {
+      if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 0x80u)) return 0;
+      n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
+      return n < 0 ? 0 : n;
+   }
    if (f == F_ROOTS_GAP) f = F_ROOTS;
    if (f == F_TRACE_BRANCH_GAP) f = F_TRACE_BRANCH;
    if (f != F_ROOTS && f != F_TRACE_BRANCH && f != F_LOAD_PATH)
@@ -1177,8 +1399,10 @@ static int used_elements(const call_t *c, int st) {
 static int filled_elements(const call_t *c) {
    if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
    if (c->family == F_ROOTS || c->family == F_TRACE_BRANCH || c->family == F_LOAD_PATH ||
-       c->family == F_ROOTS_GAP || c->family == F_TRACE_BRANCH_GAP || c->family == F_PROFILE)
+       c->family == F_ROOTS_GAP || c->family == F_TRACE_BRANCH_GAP || c->family == F_PROFILE ||
+       c->family == F_GAP_PATH || c->family == F_GAP_LAW)
       return c->capacity > 0 ? c->capacity : 0;
+   if (c->family == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
    return 0;
 }
 
@@ -1254,6 +1478,36 @@ static void run_version(const call_t *c) {
 
 /* Cross checks after a successful call (extra library calls, same watchdog). */
 static void cross_check(const call_t *c, int st, rng_t *r) {
+   if (c->family == F_GAP_CRITICAL && st == WA_OK && !(c->null_mask & 1u) && unif(r) < 0.5) {
+      /* against the path's events, load control's P_pf and the gap law at gbar*(P_min) */
+      double v[WA_GAP_CRITICAL_COUNT], a[64], cs[64], p[64], g[64], w, wf, gt, fc, pf, gb[2],
+         pa[2], pr[2], da[2], dr[2];
+      int sg[64], ev[64], z[64], n = 0, st2, st3, st4;
+      memcpy(v, D(0), sizeof v);
+      lib_call();
+      st2 = wa_gap_path(c->model, c->alpha, c->mu, 64, sg, ev, z, a, cs, p, g, &n, &w, &wf, &gt);
+      if (st2 != WA_OK || gt != v[WA_GAP_CRITICAL_G_TOUCH] ||
+          g[n - 1] != v[WA_GAP_CRITICAL_G_INTERACTION_LOST])
+         violation(c, K_INCONSISTENT, "wa_gap_path: status %d g_touch %.17g (critical %.17g), "
+                   "last gbar %.17g (critical %.17g)", st2, gt, v[0], n > 0 ? g[n - 1] : NAN,
+                   v[9]);
+      lib_call();
+      st3 = wa_critical_forces(c->model, c->alpha, c->mu, &fc, &pf);
+      if (st3 == WA_OK && (isinf(pf) ? v[WA_GAP_CRITICAL_P_MIN] != pf
+                                     : !(v[WA_GAP_CRITICAL_P_MIN] <= pf + 1e-9 * (1 + fabs(pf)))))
+         violation(c, K_INCONSISTENT, "P_min %.17g above P_pf %.17g", v[4], pf);
+      if (c->model != WA_MODEL_JKR) {
+         gb[0] = v[WA_GAP_CRITICAL_G_P_MIN];
+         gb[1] = v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * 1.5 + 1.0;
+         lib_call();
+         st4 = wa_gap_law(c->model, c->alpha, c->mu, 2, gb, pa, pr, da, dr);
+         if (st4 != WA_OK || pa[1] != 0 || pr[1] != 0 || da[1] != 0 || dr[1] != 0 ||
+             !(fabs(pr[0] - v[WA_GAP_CRITICAL_P_MIN]) <= 1e-7 * (1 + fabs(pr[0]))))
+            violation(c, K_INCONSISTENT, "wa_gap_law: status %d P_retract(gbar*(P_min) = %.17g) "
+                      "= %.17g, P_min %.17g; beyond the interaction %.17g %.17g", st4, gb[0],
+                      pr[0], v[4], pa[1], pr[1]);
+      }
+   }
    if ((c->family == F_ROOTS || c->family == F_ROOTS_GAP) && st == WA_OK &&
        !(c->null_mask & (c->family == F_ROOTS ? 15u : 31u)) && c->capacity > 0 &&
        c->capacity <= FILL) {

@@ -14,6 +14,7 @@ program tester
    use test_separation, only: collect_separation
    use test_map, only: collect_map
    use test_gappath, only: collect_gappath
+   use test_gapcritical, only: collect_gapcritical
    implicit none
    type(unittest_type), allocatable :: tests(:)
    character(len=64) :: suite, only
@@ -58,6 +59,9 @@ program tester
    end if
    if (wanted("gappath")) then
       call collect_gappath(tests); call run_suite("gappath", tests, npass, nfail, only)
+   end if
+   if (wanted("gapcritical")) then
+      call collect_gapcritical(tests); call run_suite("gapcritical", tests, npass, nfail, only)
    end if
    if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"

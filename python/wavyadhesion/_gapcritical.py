@@ -1,0 +1,136 @@
+"""Critical values under gap (mean-gap) control: the Fortran ``gap_critical_sweep``
+(module wa_gapcritical), the counterpart of :func:`critical_forces` for displacement
+control."""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from . import _wa_f2py as _f
+from ._core import (InvalidArgumentError, _INVALID_ARGUMENT, _OK, _ALPHA_MAX, _ALPHA_MIN,
+                    _MU_MAX, _MU_MIN, _check_sweep_arguments, _flat, _float_array, _model_code, _raise, _shaped, _text, _where)
+
+#: The fields of GapCritical that hold values, in the order of the Fortran
+#: ``gap_critical_names`` and the C ``WA_GAP_CRITICAL_*`` indices.
+GAP_CRITICAL_FIELDS = ("g_touch", "P_jump_in", "a_jump_in", "g_contact", "P_min", "g_P_min",
+                       "a_P_min", "g_contact_lost", "P_contact_lost", "g_interaction_lost")
+
+
+class GapCritical(NamedTuple):
+    """Critical values of the gap-controlled cycle (doc/user-guide.md, "Gap control").
+    Arrays of the broadcast shape of alpha and mu (numpy scalars when both are scalars);
+    NaN where a point failed (``status`` nonzero, ``messages`` says why)."""
+    #: Approach: gbar* where the surfaces first interact (P* = 0 above; 1 except MD)
+    g_touch: np.ndarray
+    #: P* where the approach lands when it jumps at g_touch (0: no jump)
+    P_jump_in: np.ndarray
+    #: a* there (0: no jump, or MD landing on its states without contact)
+    a_jump_in: np.ndarray
+    #: gbar* where contact is first made on the approach
+    g_contact: np.ndarray
+    #: Retraction: the most tensile load (JKR: -inf, at full contact)
+    P_min: np.ndarray
+    #: its gbar* (JKR: 0)
+    g_P_min: np.ndarray
+    #: its a* (JKR: 1/2)
+    a_P_min: np.ndarray
+    #: gbar* where contact is lost for good on the retraction
+    g_contact_lost: np.ndarray
+    #: P* of the last state with contact there
+    P_contact_lost: np.ndarray
+    #: gbar* beyond which P* = 0 on the retraction
+    g_interaction_lost: np.ndarray
+    #: library status of each point (0 = computed)
+    status: np.ndarray
+    #: index (into the flattened points) -> message, for each failed point
+    messages: dict
+
+
+def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
+    """Critical values under gap (mean-gap) control, vectorised over mu and broadcast
+    with alpha: where the approach first feels the surface and jumps in (a jump under gap
+    control keeps gbar*), where contact is made, the most tensile load on the retraction
+    and where contact and interaction are lost.
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha : array_like
+        Johnson's parameter, alpha > 0.
+    mu : array_like
+        Transition parameter, mu >= 0; broadcast with `alpha`.
+    errors : {"raise", "nan"}, optional
+        "raise" (default): raise at the first point that fails (an invalid alpha or mu
+        before any work). "nan": every point is computed; a failed or invalid one gets
+        NaN values and its status and message.
+
+    Returns
+    -------
+    GapCritical
+        The ten values (fields named as in GAP_CRITICAL_FIELDS), ``status`` and
+        ``messages``.
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model or ``errors``; (errors="raise") alpha outside [1e-12, 1e12], mu
+        outside 0 or [1e-100, 1e100], NaN or infinite values, an empty mu.
+    ConvergenceError
+        (errors="raise") The branch or the gap-controlled cycle of a point failed.
+
+    Examples
+    --------
+    >>> g = gap_critical("westergaard", 0.3, 1.0)
+    >>> float(g.g_touch), float(g.P_jump_in), float(g.g_contact_lost)
+    (1.0, 0.0, 1.0)
+    """
+    code = _model_code(model)
+    if errors not in ("raise", "nan"):
+        raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'",
+                                   _INVALID_ARGUMENT)
+    alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
+    shape = mu_b.shape
+    alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
+    if mu_f.size == 0:
+        raise InvalidArgumentError("mu is empty: give at least one value", _INVALID_ARGUMENT)
+    values = np.full((len(GAP_CRITICAL_FIELDS), mu_f.size), np.nan)
+    status_out = np.zeros(mu_f.size, dtype=np.int32)
+    messages = {}
+    if errors == "raise":
+        _check_sweep_arguments(code, alpha_f, mu_f, shape)   # every point before any work
+    with np.errstate(invalid="ignore"):
+        bad = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX) &
+                ((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX))))
+    for i in np.flatnonzero(bad):                       # errors="nan": NaN rows, reasons
+        *_, status, message = _f.fa_gap_critical_sweep(code, float(alpha_f[i]),
+                                                       np.array([mu_f[i]]))
+        status_out[i] = status
+        messages[int(i)] = _text(message)
+    uniq, inverse = np.unique(alpha_f[~bad], return_inverse=True)
+    inverse = inverse.reshape(-1)
+    good = np.flatnonzero(~bad)
+    for k, value in enumerate(uniq):
+        idx = good[inverse == k]
+        vals, rows, ifail, status, message = _f.fa_gap_critical_sweep(
+            code, float(value), np.ascontiguousarray(mu_f[idx]))
+        if status == _INVALID_ARGUMENT and (rows == _INVALID_ARGUMENT).all():
+            # this alpha or one of its mu was refused: nothing computed for its points
+            where = int(idx[ifail - 1]) if ifail > 0 else int(idx[0])
+            if errors == "raise":
+                _raise(status, message, _where(where + 1, shape))
+            status_out[idx] = status
+            for i in idx:
+                messages[int(i)] = _text(message)
+            continue
+        values[:, idx] = vals
+        status_out[idx] = rows
+        for j in np.flatnonzero(rows != _OK):
+            i = int(idx[j])
+            if errors == "raise":
+                _raise(int(rows[j]), message, _where(i + 1, shape))
+            messages[i] = _text(message)
+    fields = [_shaped(values[k], shape) for k in range(len(GAP_CRITICAL_FIELDS))]
+    return GapCritical(*fields, _shaped(status_out, shape), messages)
