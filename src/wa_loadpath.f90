@@ -27,6 +27,14 @@ module wa_loadpath
    integer, parameter :: max_jumps = 15
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
+   !> A case-1 minimum of P* below this a* from which contact is lost counts as a gradual
+   !> pull-off (doc/theory.md, "Pull-off at a point"): near a* -> 0, P* - P*(0) behaves
+   !> like a*^2 (k1 ln a* + k2), so a minimum sits at an a* that shrinks exponentially with
+   !> mu and its load is within ~a*^2 of P*(a* -> 0). Whether it lies above the branch's
+   !> first point a_start = 1e-6, where P* is flat to 1e-12, is not decidable in double
+   !> precision (the mechanism flickered over 1e-5 relative in mu); at 1e-4 the fold is
+   !> placed to ~1e-8 relative, and the boundary to ~1e-9 in mu. P_pf is the fold's load.
+   real(wp), parameter, public :: a_point_pull_off = 1.0e-3_wp
    !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
@@ -202,6 +210,11 @@ contains
             path%p_pf = load
             path%pf_by_jump = .true.
             path%pf_mechanism = jump_from(branch%zone_case(k))
+            if (path%pf_mechanism == mechanism_jump_case1 .and. branch%a_star(k) < &
+               a_point_pull_off) then
+               path%pf_mechanism = mechanism_gradual     ! contact shrank to a point first
+               path%pf_by_jump = .false.
+            end if
             call add(path, stage_unloading, event_pull_off, branch%a_star(k), &
                branch%c_star(k), load)
             call vertex(loop, 0.0_wp, load)
