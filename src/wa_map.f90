@@ -887,7 +887,7 @@ contains
       if (p%status /= wa_ok) return
       call trace_branch(model, params, br, p%status, msg)
       if (p%status /= wa_ok) return
-      call path_from_branch(model, params, br, path, p%status, msg)
+      call path_from_branch(model, params, br, path, p%status, msg, mechanisms_only=.true.)
       if (p%status /= wa_ok) return
       p%mech = [path%fc_mechanism, path%pf_mechanism]
       p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
