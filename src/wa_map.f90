@@ -29,6 +29,8 @@ module wa_map
 
    public :: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning
    public :: map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+   public :: map_point, special_meaning, map_point_meet, map_point_turn, map_point_end, &
+      map_point_fail
 
    !> How a boundary curve starts or ends: at the first/last alpha of the grid; inside the
    !> grid (it meets another boundary, or the region it bounds closes: located to 1e-6
@@ -54,6 +56,21 @@ module wa_map
       integer :: start_kind = map_end_grid, end_kind = map_end_grid
    end type map_boundary
 
+   !> Special points: where boundaries meet (an end of one curve on another curve or at
+   !> another's end), where a boundary turns back in alpha (the ends of a curve and of its
+   !> reverse, e.g. 212 and 221, coincide: the region between them closes), where one
+   !> ends alone (its region closes), and where the load path fails.
+   integer, parameter :: map_point_meet = 1, map_point_turn = 2, map_point_end = 3, &
+      map_point_fail = 4
+
+   !> A special point of the map: kind (map_point_*), where, and the boundary codes
+   !> involved (codes(2) = 0 when only one).
+   type :: map_point
+      integer :: kind = 0
+      real(wp) :: alpha = 0.0_wp, mu = 0.0_wp
+      integer :: codes(2) = 0
+   end type map_point
+
    !> The map: the grids, the mechanisms in every cell, the boundary curves.
    type :: map_type
       integer :: model = 0
@@ -65,6 +82,9 @@ module wa_map
       type(map_boundary), allocatable :: boundary(:)
       !> Load paths computed (the cost of the map)
       integer :: n_paths = 0
+      !> Where boundaries meet, turn back, end or fail inside the grid (special_meaning)
+      integer :: n_special = 0
+      type(map_point), allocatable :: special(:)
    end type map_type
 
    !> One load path reduced to what the map needs: both mechanisms and the loads whose
@@ -79,8 +99,8 @@ module wa_map
       !> F(a_start, y_max): changes sign where a case-1 root is born at the branch's
       !> first point (the corner minimum of case 2 appears: gradual <-> jump case 2)
       real(wp) :: f_start = 0.0_wp
-      !> ln(a* of the pull-off / a_point_pull_off) where contact is lost at a case-1
-      !> minimum (gradual <-> jump case 1 where the minimum passes a_point_pull_off)
+      !> ln(a* of the pull-off / a_point_pull_off) where contact is lost at a minimum
+      !> (gradual <-> jump where the minimum passes a_point_pull_off)
       real(wp) :: ln_a_pf = 0.0_wp
    end type probe_type
 
@@ -164,7 +184,139 @@ contains
          call scan_alpha(map, j)
       end do
       call fill_regions(map)
+      call find_special_points(map)
    end subroutine adhesion_map
+
+   !> "pull-off: jump case 1 -> jump case 2 turns back in alpha" and the like.
+   pure function special_meaning(point) result(text)
+      type(map_point), intent(in) :: point
+      character(len=:), allocatable :: text
+      select case (point%kind)
+      case (map_point_meet)
+         text = boundary_meaning(point%codes(1))//" meets "// &
+            boundary_meaning(point%codes(2))
+      case (map_point_turn)
+         text = boundary_meaning(point%codes(1))//" turns back in alpha (meets its "// &
+            "reverse "//code_text(point%codes(2))//"; the region between closes)"
+      case (map_point_end)
+         text = boundary_meaning(point%codes(1))//" ends (its region closes)"
+      case (map_point_fail)
+         text = boundary_meaning(point%codes(1))//": the load path fails here"
+      case default
+         text = "unknown"
+      end select
+   end function special_meaning
+
+   pure function code_text(code) result(text)
+      integer, intent(in) :: code
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') code
+      text = trim(buf)
+   end function code_text
+
+   !> Every curve end inside the grid (map_end_inside, map_end_failed) becomes a special
+   !> point: a turn where it coincides with an end of the reverse curve (1e-3 relative in
+   !> alpha, 5e-2 in mu: near a turn mu varies like the square root of the distance in
+   !> alpha, so the located ends of the two halves differ by that much), a meeting where it
+   !> coincides with an end of, or lies on, another curve, else an end (or a failure).
+   !> Each pair of coinciding ends gives one point (at the mean of the two in logs).
+   pure subroutine find_special_points(map)
+      type(map_type), intent(inout) :: map
+      real(wp), parameter :: tol_a = 1.0e-3_wp, tol_m = 5.0e-2_wp
+      type(map_point) :: pt
+      real(wp) :: a, m, a2, m2
+      integer :: c, e, c2, e2, kind, kind2
+      logical :: used(max_boundaries, 2), found
+      allocate (map%special(0))
+      used = .false.
+      do c = 1, map%n_boundaries
+         do e = 1, 2
+            if (used(c, e)) cycle
+            call end_of(c, e, a, m, kind)
+            if (kind /= map_end_inside .and. kind /= map_end_failed) cycle
+            used(c, e) = .true.
+            pt%alpha = a
+            pt%mu = m
+            pt%codes = [map%boundary(c)%code, 0]
+            pt%kind = merge(map_point_fail, map_point_end, kind == map_end_failed)
+            found = .false.
+            do c2 = 1, map%n_boundaries              ! an end of another curve here
+               if (c2 == c) cycle
+               do e2 = 1, 2
+                  if (used(c2, e2)) cycle
+                  call end_of(c2, e2, a2, m2, kind2)
+                  if (kind2 /= map_end_inside .and. kind2 /= map_end_failed) cycle
+                  if (abs(log(a2/a)) > tol_a .or. abs(log(m2/m)) > tol_m) cycle
+                  used(c2, e2) = .true.
+                  pt%codes(2) = map%boundary(c2)%code
+                  pt%kind = merge(map_point_turn, map_point_meet, &
+                     reverse(map%boundary(c)%code) == map%boundary(c2)%code)
+                  pt%alpha = sqrt(a*a2)
+                  pt%mu = sqrt(m*m2)
+                  found = .true.
+                  exit
+               end do
+               if (found) exit
+            end do
+            if (.not. found) then                 ! on another curve
+               do c2 = 1, map%n_boundaries
+                  if (c2 == c) cycle
+                  if (on_curve(map%boundary(c2), a, m)) then
+                     pt%codes(2) = map%boundary(c2)%code
+                     pt%kind = map_point_meet
+                     exit
+                  end if
+               end do
+            end if
+            map%special = [map%special, pt]
+            map%n_special = map%n_special + 1
+         end do
+      end do
+   contains
+      pure subroutine end_of(ci, ei, ae, me, ke)
+         integer, intent(in) :: ci, ei
+         real(wp), intent(out) :: ae, me
+         integer, intent(out) :: ke
+         associate (b => map%boundary(ci))
+            if (ei == 1) then
+               ae = b%alpha(1)
+               me = b%mu(1)
+               ke = b%start_kind
+            else
+               ae = b%alpha(b%n)
+               me = b%mu(b%n)
+               ke = b%end_kind
+            end if
+         end associate
+      end subroutine end_of
+
+      pure integer function reverse(code)
+         integer, intent(in) :: code
+         reverse = 100*(code/100) + 10*mod(code, 10) + mod(code/10, 10)
+      end function reverse
+
+      !> (a, m) within tol_a of the curve's alpha span and tol_m in ln mu of its polyline
+      pure logical function on_curve(b, a, m)
+         type(map_boundary), intent(in) :: b
+         real(wp), intent(in) :: a, m
+         real(wp) :: f, mi
+         integer :: i
+         on_curve = .false.
+         do i = 1, b%n - 1
+            if (.not. (a >= b%alpha(i)*(1.0_wp - tol_a) .and. &
+               a <= b%alpha(i + 1)*(1.0_wp + tol_a))) cycle
+            f = 0.0_wp
+            if (b%alpha(i + 1) > b%alpha(i)) f = min(1.0_wp, max(0.0_wp, &
+               log(a/b%alpha(i))/log(b%alpha(i + 1)/b%alpha(i))))
+            mi = exp(log(b%mu(i)) + f*log(b%mu(i + 1)/b%mu(i)))
+            if (abs(log(m/mi)) <= tol_m) then
+               on_curve = .true.
+               return
+            end if
+         end do
+      end function on_curve
+   end subroutine find_special_points
 
    subroutine check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)
       integer, intent(in) :: model, n_mu
@@ -493,7 +645,7 @@ contains
       !> Only bracket the change (t = the bracket's middle): enough to know it is there
       logical, intent(in), optional :: bracket_only
       type(probe_type) :: p0, p1
-      real(wp) :: t0, t1, d
+      real(wp) :: t0, t1, d, tol
       integer :: dir, m0, stat, m_hi, tries
 
       t = t_pred
@@ -538,18 +690,17 @@ contains
       end do
       if (p1%mech(tr%which) == m0) return
       if (p1%mech(tr%which) /= merge(tr%mb, tr%ma, dir == 1)) return
-      if (optval(bracket_only)) then
-         if (.true.) then
-            t = 0.5_wp*(t0 + t1)
-            kind = -1
-            if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
-            return
-         end if
+      if (optval(bracket_only)) then      ! enough to know the curve is there
+         t = 0.5_wp*(t0 + t1)
+         kind = -1
+         if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
+         return
       end if
+      tol = tol_t
       if (dir == 1) then
-         call refine(tr, alpha, t0, p0, t1, p1, t, m_hi, stat)
+         call refine(tr, alpha, t0, p0, t1, p1, t, m_hi, stat, tol)
       else
-         call refine(tr, alpha, t1, p1, t0, p0, t, m_hi, stat)
+         call refine(tr, alpha, t1, p1, t0, p0, t, m_hi, stat, tol)
       end if
       if (stat /= wa_ok) then
          kind = map_end_failed
@@ -681,9 +832,11 @@ contains
    !> Shrink [t_lo, t_hi] (mechanisms tr%ma at t_lo, other at t_hi) to tol_t: secant on
    !> the indicator of the tracker's pair, bisection whenever two steps do not halve the
    !> bracket or the indicator is missing. t = the midpoint; m_hi = mechanism at t_hi.
-   subroutine refine(tr, alpha, t_lo_in, p_lo, t_hi_in, p_hi, t, m_hi, status)
+   subroutine refine(tr, alpha, t_lo_in, p_lo, t_hi_in, p_hi, t, m_hi, status, tol_in)
       type(tracker_type), intent(inout) :: tr
       real(wp), intent(in) :: alpha, t_lo_in, t_hi_in
+      !> Width of the final bracket (default tol_t)
+      real(wp), intent(in), optional :: tol_in
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp), intent(out) :: t
       integer, intent(out) :: m_hi, status
@@ -694,7 +847,10 @@ contains
       real(wp) :: t_lo, t_hi, hx(2), hg(2), x, g, w_old(2), ts(max_hist)
       integer :: nh, it, k, n, i_lo, i_hi
       logical :: bisect
+      real(wp) :: tol
 
+      tol = tol_t
+      if (present(tol_in)) tol = tol_in
       t_lo = t_lo_in
       t_hi = t_hi_in
       m_hi = p_hi%mech(tr%which)
@@ -711,14 +867,14 @@ contains
       call remember(t_hi, indicator(tr, p_hi))
       w_old = huge(1.0_wp)
       do it = 1, 200
-         if (t_hi - t_lo <= tol_t) exit
+         if (t_hi - t_lo <= tol) exit
          bisect = nh < 2 .or. t_hi - t_lo > 0.5_wp*w_old(1)
          x = 0.5_wp*(t_lo + t_hi)
          if (.not. bisect) then
             if (hg(2) /= hg(1)) x = hx(2) - hg(2)*(hx(2) - hx(1))/(hg(2) - hg(1))
             if (.not. (x > t_lo .and. x < t_hi)) x = 0.5_wp*(t_lo + t_hi)
          end if
-         x = min(max(x, t_lo + 0.45_wp*tol_t), t_hi - 0.45_wp*tol_t)
+         x = min(max(x, t_lo + 0.45_wp*tol), t_hi - 0.45_wp*tol)
          do k = 1, size(fallback)
             call probe(tr%model, alpha, x, px)
             tr%n_paths = tr%n_paths + 1
@@ -746,9 +902,9 @@ contains
          g = indicator(tr, px)
          call remember(x, g)
       end do
-      if (status == wa_ok .and. t_hi - t_lo > tol_t) status = wa_not_converged
+      if (status == wa_ok .and. t_hi - t_lo > tol) status = wa_not_converged
       t = 0.5_wp*(t_lo + t_hi)
-      if (status == wa_ok .and. ts(i_lo) == t_lo .and. ts(i_hi) == t_hi) &
+      if (status == wa_ok .and. ts(i_lo) == t_lo .and. ts(i_hi) == t_hi .and. tol == tol_t) &
          call learn(tr, ts(1:n), ps(1:n), i_lo, i_hi, t)
    contains
       subroutine remember(tx, gx)
@@ -893,14 +1049,18 @@ contains
       p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
       do i = path%n, 1, -1
          if (path%event(i) /= event_pull_off) cycle
-         if (path%c_star(i) < 0.5_wp .and. path%a_star(i) >= opts%a_start) &
-            p%ln_a_pf = log(path%a_star(i)/a_point_pull_off)
+         if (path%a_star(i) >= opts%a_start) p%ln_a_pf = log(path%a_star(i)/a_point_pull_off)
          exit
       end do
       n = br%n
       p%v_fc(0) = br%p_star(n)
       p%v_fc(3) = 0.0_wp
-      p%v_pf(0) = br%p_star(1)
+      do i = 1, n                         ! the contact curve's a* -> 0 end (MD: after
+         if (br%a_star(i) > 0.0_wp) then  ! the pieces without contact)
+            p%v_pf(0) = br%p_star(i)
+            exit
+         end if
+      end do
       do i = 2, n - 1
          zc = merge(1, 2, br%zone_case(i) == zone_inside)
          if (br%extremum(i) == 1) then
