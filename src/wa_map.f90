@@ -216,20 +216,25 @@ contains
    end function code_text
 
    !> Every curve end inside the grid (map_end_inside, map_end_failed) becomes a special
-   !> point: a turn where it coincides with an end of the reverse curve (1e-3 relative in
-   !> alpha, 5e-2 in mu: near a turn mu varies like the square root of the distance in
-   !> alpha, so the located ends of the two halves differ by that much), a meeting where it
+   !> point: a turn where it coincides with an end of the reverse curve, a meeting where it
    !> coincides with an end of, or lies on, another curve, else an end (or a failure).
-   !> Each pair of coinciding ends gives one point (at the mean of the two in logs).
+   !> Coincide: within one grid step in ln alpha (at least 1e-3; a curve whose
+   !> continuation fails short of its true end stops at the last grid point) and 5e-2 in
+   !> ln mu (near a turn mu varies like the square root of the distance in alpha). Each
+   !> pair of coinciding ends gives one point (at the mean of the two in logs).
    pure subroutine find_special_points(map)
       type(map_type), intent(inout) :: map
-      real(wp), parameter :: tol_a = 1.0e-3_wp, tol_m = 5.0e-2_wp
+      real(wp), parameter :: tol_m = 5.0e-2_wp
+      real(wp) :: tol_a
       type(map_point) :: pt
       real(wp) :: a, m, a2, m2
       integer :: c, e, c2, e2, kind, kind2
       logical :: used(max_boundaries, 2), found
       allocate (map%special(0))
       used = .false.
+      tol_a = 1.0e-3_wp
+      if (size(map%alpha) > 1) tol_a = max(tol_a, 1.01_wp*maxval(log(map%alpha(2:)/ &
+         map%alpha(:size(map%alpha) - 1))))
       do c = 1, map%n_boundaries
          do e = 1, 2
             if (used(c, e)) cycle

@@ -22,7 +22,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 (matplotlib is imported only when one of them is called).
 """
 
-from ._map import AdhesionMap, Boundary, adhesion_map, boundary_meaning
+from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_meaning
 from ._core import (
     EVENTS,
     MECHANISMS,
@@ -65,6 +65,7 @@ del _dist_version
 __all__ = [
     "AdhesionMap",
     "Boundary",
+    "SpecialPoint",
     "adhesion_map",
     "boundary_meaning",
     "EVENTS",

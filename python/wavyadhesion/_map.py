@@ -51,6 +51,35 @@ class Boundary:
         return boundary_meaning(self.code)
 
 
+#: Kinds of special points (wa_map's map_point_*), by code.
+SPECIAL_KINDS = {1: "meet", 2: "turn", 3: "end", 4: "load path fails"}
+
+
+@dataclass(frozen=True)
+class SpecialPoint:
+    """Where boundaries meet (``kind`` "meet"), where one turns back in alpha ("turn": it
+    meets its reverse, e.g. 212 and 221, and the region between closes), where one ends
+    alone ("end": its region closes), or where the load path fails; ``codes`` are the
+    boundary codes involved (one or two), ``meaning`` says it in words."""
+
+    kind: str
+    alpha: float
+    mu: float
+    codes: tuple
+
+    @property
+    def meaning(self) -> str:
+        first = boundary_meaning(self.codes[0])
+        if self.kind == "meet":
+            return f"{first} meets {boundary_meaning(self.codes[1])}"
+        if self.kind == "turn":
+            return (f"{first} turns back in alpha (meets its reverse {self.codes[1]}; "
+                    "the region between closes)")
+        if self.kind == "end":
+            return f"{first} ends (its region closes)"
+        return f"{first}: the load path fails here"
+
+
 @dataclass(frozen=True)
 class AdhesionMap:
     """Boundaries and regions of one model over an (alpha, mu) grid.
@@ -75,6 +104,8 @@ class AdhesionMap:
     westergaard: Optional[np.ndarray] = None
     jkr_fc: Optional[np.ndarray] = None
     jkr_P_fc: Optional[np.ndarray] = field(default=None, repr=False)
+    #: Where boundaries meet, turn back, end or fail inside the grid (SpecialPoint)
+    special: list = field(default_factory=list)
 
 
 def _grid(spec, name):
@@ -214,7 +245,7 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     else:
         out = _f.fa_adhesion_map(*args)
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, n_paths, status,
-     message) = out
+     message, sp_kind, sp_codes, sp_point, n_special) = out
     if status != _OK:
         _raise(status, message)
     n = int(n_out)
@@ -225,9 +256,13 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
             continue
         boundaries.append(Boundary(int(codes[sel[0]]), a_out[sel].copy(), m_out[sel].copy(),
                                    int(kinds[0, sel[0]]), int(kinds[1, sel[0]])))
+    special = [SpecialPoint(SPECIAL_KINDS.get(int(sp_kind[k]), "unknown"),
+                            float(sp_point[0, k]), float(sp_point[1, k]),
+                            tuple(int(c) for c in sp_codes[:, k] if c != 0))
+               for k in range(int(n_special))]
     result = dict(model=str(model), alpha=alpha, mu=np.asarray(mu_grid).copy(),
                   fc_region=np.asarray(fc).copy(), pf_region=np.asarray(pf).copy(),
-                  boundaries=boundaries, n_paths=int(n_paths))
+                  boundaries=boundaries, n_paths=int(n_paths), special=special)
     if forces:
         mu = result["mu"]
         if pending is not None and np.array_equal(pending[0], mu):
