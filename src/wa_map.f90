@@ -735,7 +735,7 @@ contains
       integer, parameter :: max_probes = 10
       type(probe_type) :: px, ps(max_probes)
       real(wp) :: t_lo, t_hi, hx(2), hg(2), r, x, g, slope, ts(max_probes)
-      logical :: have_lo, have_hi
+      logical :: have_lo, have_hi, missing
       integer :: n_probes, nh, side, i_lo, i_hi
 
       kind = map_end_inside
@@ -745,6 +745,7 @@ contains
       i_hi = 0
       have_lo = .false.
       have_hi = .false.
+      missing = .false.
       t_lo = 0.0_wp
       t_hi = 0.0_wp
       nh = 0
@@ -765,7 +766,9 @@ contains
          r = hx(2) - hg(2)/slope
          if (abs(r - t_pred) > reach) return
          if (have_lo .and. have_hi) then        ! keep inside the bracket
-            if (.not. (r > t_lo .and. r < t_hi)) r = 0.5_wp*(t_lo + t_hi)
+            if (.not. (r > t_lo .and. r < t_hi) .or. missing) r = 0.5_wp*(t_lo + t_hi)
+         else if (missing) then
+            return
          end if
          if (abs(r - hx(2)) > 1.0e-6_wp) then
             if (.not. sample(r)) return
@@ -805,7 +808,8 @@ contains
          ps(n_probes) = px
          if (px%status /= wa_ok) return
          g = indicator(tr, px)
-         if (.not. ieee_is_finite(g)) return
+         missing = .not. ieee_is_finite(g)    ! bracket only (bisect), unless nothing else
+         if (missing .and. nh == 0) return
          if (px%mech(tr%which) == tr%ma) then
             if (have_hi) then
                if (xs >= t_hi) return
@@ -827,9 +831,11 @@ contains
          else
             return
          end if
-         hx = [hx(2), xs]
-         hg = [hg(2), g]
-         nh = min(nh + 1, 2)
+         if (.not. missing) then
+            hx = [hx(2), xs]
+            hg = [hg(2), g]
+            nh = min(nh + 1, 2)
+         end if
          sample = .true.
       end function sample
    end subroutine secant_point
