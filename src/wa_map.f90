@@ -219,12 +219,12 @@ contains
    !> point: a turn where it coincides with an end of the reverse curve, a meeting where it
    !> coincides with an end of, or lies on, another curve, else an end (or a failure).
    !> Coincide: within one grid step in ln alpha (at least 1e-3; a curve whose
-   !> continuation fails short of its true end stops at the last grid point) and 5e-2 in
+   !> continuation fails short of its true end stops at the last grid point) and 0.1 in
    !> ln mu (near a turn mu varies like the square root of the distance in alpha). Each
    !> pair of coinciding ends gives one point (at the mean of the two in logs).
    pure subroutine find_special_points(map)
       type(map_type), intent(inout) :: map
-      real(wp), parameter :: tol_m = 5.0e-2_wp
+      real(wp), parameter :: tol_m = 1.0e-1_wp
       real(wp) :: tol_a
       type(map_point) :: pt
       real(wp) :: a, m, a2, m2
@@ -609,7 +609,7 @@ contains
          end if
       end do
       if (.not. refined(n)) then            ! the last point found before the end, refined
-         call locate(tr, exp(x(n)), y(n), 1.0e-6_wp, t, kind)
+         call locate(tr, exp(x(n)), y(n), 1.0e-3_wp, t, kind)
          if (kind == -1) then
             y(n) = t
             refined(n) = .true.
@@ -695,8 +695,9 @@ contains
       end do
       if (p1%mech(tr%which) == m0) return
       if (p1%mech(tr%which) /= merge(tr%mb, tr%ma, dir == 1)) return
-      if (optval(bracket_only)) then      ! enough to know the curve is there
-         t = 0.5_wp*(t0 + t1)
+      if (optval(bracket_only)) then      ! enough to know the curve is there (and not
+         t = 0.5_wp*(t0 + t1)             ! another change of the same pair, farther off)
+         if (abs(t - t_pred) > 5.0e-2_wp) return
          kind = -1
          if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
          return
