@@ -530,6 +530,11 @@ contains
                trim(ends(b%end_kind))//"]"]
          end associate
       end do
+      do c = 1, map%n_special
+         notes = [character(len=400) :: notes, "special point "//int_text(c)//": alpha "// &
+            format_real(map%special(c)%alpha)//" mu "//format_real(map%special(c)%mu)// &
+            ": "//special_meaning(map%special(c))]
+      end do
       call write_header(out, opts%format, "adhesion map: mechanism boundaries mu_b(alpha)", &
          model_name(opts%model), columns="boundary alpha mu", notes=notes)
       do c = 1, map%n_boundaries

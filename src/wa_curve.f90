@@ -13,13 +13,13 @@ module wa_curve
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, model_westergaard, model_jkr, model_dw, &
       model_md
-   use wa_dw, only: dw_residual, dw_state_at
+   use wa_dw, only: dw_residual, dw_state_at, dw_load_at
    use wa_md, only: md_curve_residual, md_curve_state
    use wa_models, only: model_roots, max_model_roots
    implicit none
    private
 
-   public :: curve_residual, curve_state, curve_y_max, curve_weight, curve_case2_load
+   public :: curve_residual, curve_state, curve_load, curve_y_max, curve_weight, curve_case2_load
 
    !> y where c* = 1/2, in both models' variables.
    real(wp), parameter :: curve_y_max = 0.0_wp
@@ -62,6 +62,20 @@ contains
          state%p_star = ieee_value(state%p_star, ieee_quiet_nan)
       end select
    end function curve_state
+
+   !> P* of curve_state alone (DW: without its mean gap).
+   pure real(wp) function curve_load(model, params, a_star, y)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, y
+      type(state_type) :: state
+      if (model == model_dw) then
+         curve_load = dw_load_at(params, a_star, y)
+      else
+         state = curve_state(model, params, a_star, y)
+         curve_load = state%p_star
+      end if
+   end function curve_load
 
 
    !> Scale of y in the arclength, so that a* and w y vary alike along the curve.

@@ -20,7 +20,7 @@ module wa_dw
    implicit none
    private
 
-   public :: dw_equilibrium, dw_roots, dw_residual, dw_state_at, dw_traction, dw_gap
+   public :: dw_equilibrium, dw_roots, dw_residual, dw_state_at, dw_load_at, dw_traction, dw_gap
 
    !> sin(pi a*) and the differences that must not be formed by subtraction.
    type :: contact_geometry
@@ -173,6 +173,18 @@ contains
       type(state_type) :: state
       state = case1_state(params, geometry(a_star), exp(u))
    end function dw_state_at
+
+   !> P* of dw_state_at alone (the same expression, without the mean gap): what the
+   !> continuation's difference stencils need.
+   pure real(wp) function dw_load_at(params, a_star, u)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, u
+      type(contact_geometry) :: geo
+      real(wp) :: c, d2, omc2
+      geo = geometry(a_star)
+      call zone_of(geo, exp(u), c, d2, omc2)
+      dw_load_at = geo%a**2 - 0.5_wp*params%sigma0*sqrt(d2/geo%one_minus_a2)
+   end function dw_load_at
 
    ! ---------------------------------------------------------------- internals
 

@@ -27,6 +27,17 @@ module wa_loadpath
    integer, parameter :: max_jumps = 15
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
+   !> A minimum of P* below this a* from which contact is lost (a fold of case 1 or a
+   !> corner at c* = 1/2) counts as a gradual pull-off: the contact has shrunk to a point
+   !> (doc/theory.md, "Pull-off at a point"). Near a* -> 0, P* - P*(0) behaves like
+   !> a*^2 (k1 ln a* + k2), so a case-1 minimum sits at an a* that shrinks exponentially
+   !> with mu, its load within ~a*^2 of P*(a* -> 0). Whether it lies above the branch's
+   !> first point a_start = 1e-6, where P* is flat to 1e-12, is not decidable in double
+   !> precision (the mechanism flickered over 1e-5 relative in mu); at 1e-3 the fold is
+   !> placed to ~1e-8 relative, the boundary to ~1e-10 in mu. Likewise a corner minimum
+   !> born at a_start (a case-1 piece appearing there) made a sliver of "jump case 2"
+   !> 1e-5 wide in mu (DW, alpha 0.31). P_pf stays the load of that minimum.
+   real(wp), parameter, public :: a_point_pull_off = 1.0e-3_wp
    !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &
@@ -82,24 +93,32 @@ contains
    end subroutine critical_forces
 
    !> Loading from separation at P* = 0, then unloading from full contact.
-   subroutine path_from_branch(model, params, branch, path, status, errmsg)
+   !> mechanisms_only (default false): the mechanisms, and which points jump, without
+   !> solving the landing points or P*(a* -> 0) (events at the traced points; p_fc, p_pf
+   !> and the loop area are then those of the traced points): what the adhesion map needs.
+   subroutine path_from_branch(model, params, branch, path, status, errmsg, mechanisms_only)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
       type(path_type), intent(out) :: path
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      logical, intent(in), optional :: mechanisms_only
       type(polyline) :: loop
-      call loading(model, params, branch, path, loop, status, errmsg)
+      logical :: solve
+      solve = .true.
+      if (present(mechanisms_only)) solve = .not. mechanisms_only
+      call loading(model, params, branch, path, loop, status, errmsg, solve)
       if (status /= wa_ok) return
-      call unloading(model, params, branch, path, loop, status, errmsg)
+      call unloading(model, params, branch, path, loop, status, errmsg, solve)
       if (status /= wa_ok) return
       path%loop_area = enclosed_area(loop)
    end subroutine path_from_branch
 
    !> Jump in at P* = 0, rise along stable pieces, jump at every maximum, until full contact.
-   subroutine loading(model, params, branch, path, loop, status, errmsg)
+   subroutine loading(model, params, branch, path, loop, status, errmsg, solve)
       integer, intent(in) :: model
+      logical, intent(in) :: solve
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
       type(path_type), intent(inout) :: path
@@ -125,9 +144,9 @@ contains
             path%fc_by_jump = .true.
             return
          end if
-         if (seg == 1 .and. branch%p_star(1) >= load) then   ! in contact from a* -> 0 on
-            s%a_star = branch%a_star(1)
-            s%c_star = branch%c_star(1)
+         if ((seg == 1 .and. branch%p_star(1) >= load) .or. .not. solve) then
+            s%a_star = branch%a_star(seg)                   ! in contact from a* -> 0 on
+            s%c_star = branch%c_star(seg)
          else
             call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
             if (status /= wa_ok) return
@@ -155,8 +174,9 @@ contains
 
    !> Leave full contact at P*(a* -> 1/2), fall along stable pieces, jump at every
    !> minimum, until contact is lost at a fold or as a* shrinks to zero.
-   subroutine unloading(model, params, branch, path, loop, status, errmsg)
+   subroutine unloading(model, params, branch, path, loop, status, errmsg, solve)
       integer, intent(in) :: model
+      logical, intent(in) :: solve
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
       type(path_type), intent(inout) :: path
@@ -185,8 +205,15 @@ contains
             call follow(loop, branch, merge(seg + 1, seg, branch%p_star(seg + 1) < &
                branch%p_star(seg)), k)
             if (branch%event(k) == event_branch_end) then   ! shrinks gradually to a* -> 0
-               call curve_equilibrium(model, params, a_limit, branch%c_star(k), s, status, errmsg)
-               if (status /= wa_ok) return
+               if (solve) then
+                  call curve_equilibrium(model, params, a_limit, branch%c_star(k), s, &
+                     status, errmsg)
+                  if (status /= wa_ok) return
+               else
+                  s%a_star = a_limit
+                  s%c_star = branch%c_star(k)
+                  s%p_star = branch%p_star(k)
+               end if
                path%p_pf = s%p_star
                call add(path, stage_unloading, event_pull_off, s%a_star, s%c_star, path%p_pf)
                call vertex(loop, 0.0_wp, path%p_pf)
@@ -202,13 +229,22 @@ contains
             path%p_pf = load
             path%pf_by_jump = .true.
             path%pf_mechanism = jump_from(branch%zone_case(k))
+            if (branch%a_star(k) < a_point_pull_off) then
+               path%pf_mechanism = mechanism_gradual     ! contact shrank to a point first
+               path%pf_by_jump = .false.
+            end if
             call add(path, stage_unloading, event_pull_off, branch%a_star(k), &
                branch%c_star(k), load)
             call vertex(loop, 0.0_wp, load)
             return
          end if
-         call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
-         if (status /= wa_ok) return
+         if (solve) then
+            call solve_on_segment(model, params, branch, seg, load, s, status, errmsg)
+            if (status /= wa_ok) return
+         else
+            s%a_star = branch%a_star(seg)
+            s%c_star = branch%c_star(seg)
+         end if
          call add(path, stage_unloading, event_jump_end, s%a_star, s%c_star, load)
          call vertex(loop, s%a_star, load)
       end do

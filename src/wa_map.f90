@@ -15,19 +15,22 @@
 !> (it meets another boundary, a region closes, or it leaves [mu_lo, mu_hi]) its end is
 !> located by bisection in alpha to 1e-6 relative.
 module wa_map
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, set_error
    use wa_params, only: params_type, new_params, alpha_min, alpha_max, mu_min, mu_max
    use wa_state, only: model_dw, model_md, zone_inside
-   use wa_branch, only: branch_type, trace_branch
+   use wa_branch, only: branch_type, trace_branch, trace_options, event_pull_off
+   use wa_curve, only: curve_residual, curve_y_max
    use wa_loadpath, only: path_type, path_from_branch, mechanism_gradual, &
-      mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
+      mechanism_jump_case1, mechanism_jump_case2, mechanism_snap, a_point_pull_off
    implicit none
    private
 
    public :: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning
    public :: map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+   public :: map_point, special_meaning, map_point_meet, map_point_turn, map_point_end, &
+      map_point_fail
 
    !> How a boundary curve starts or ends: at the first/last alpha of the grid; inside the
    !> grid (it meets another boundary, or the region it bounds closes: located to 1e-6
@@ -53,6 +56,21 @@ module wa_map
       integer :: start_kind = map_end_grid, end_kind = map_end_grid
    end type map_boundary
 
+   !> Special points: where boundaries meet (an end of one curve on another curve or at
+   !> another's end), where a boundary turns back in alpha (the ends of a curve and of its
+   !> reverse, e.g. 212 and 221, coincide: the region between them closes), where one
+   !> ends alone (its region closes), and where the load path fails.
+   integer, parameter :: map_point_meet = 1, map_point_turn = 2, map_point_end = 3, &
+      map_point_fail = 4
+
+   !> A special point of the map: kind (map_point_*), where, and the boundary codes
+   !> involved (codes(2) = 0 when only one).
+   type :: map_point
+      integer :: kind = 0
+      real(wp) :: alpha = 0.0_wp, mu = 0.0_wp
+      integer :: codes(2) = 0
+   end type map_point
+
    !> The map: the grids, the mechanisms in every cell, the boundary curves.
    type :: map_type
       integer :: model = 0
@@ -64,6 +82,9 @@ module wa_map
       type(map_boundary), allocatable :: boundary(:)
       !> Load paths computed (the cost of the map)
       integer :: n_paths = 0
+      !> Where boundaries meet, turn back, end or fail inside the grid (special_meaning)
+      integer :: n_special = 0
+      type(map_point), allocatable :: special(:)
    end type map_type
 
    !> One load path reduced to what the map needs: both mechanisms and the loads whose
@@ -75,13 +96,28 @@ module wa_map
       real(wp) :: v_fc(0:3) = 0.0_wp
       !> Pull-off: 0 P* at a* -> 0, 1/2 lowest minimum on case 1 / case 2
       real(wp) :: v_pf(0:2) = 0.0_wp
+      !> F(a_start, y_max): changes sign where a case-1 root is born at the branch's
+      !> first point (the corner minimum of case 2 appears: gradual <-> jump case 2)
+      real(wp) :: f_start = 0.0_wp
+      !> ln(a* of the pull-off / a_point_pull_off) where contact is lost at a minimum
+      !> (gradual <-> jump where the minimum passes a_point_pull_off)
+      real(wp) :: ln_a_pf = 0.0_wp
    end type probe_type
+
+   !> The indicators a boundary can be followed by (the first whose signs differ across
+   !> a located bracket is used for the next point's secant)
+   integer, parameter :: ind_none = 0, ind_loads = 1, ind_f_start = 2, ind_a_pf = 3
 
    !> What continuing a curve needs (fixed for one map).
    type :: tracker_type
       integer :: model = 0, which = 0, ma = -1, mb = -1
       real(wp) :: t_min = 0.0_wp, t_max = 0.0_wp
       integer :: n_paths = 0
+      !> d(indicator)/d(ln mu) at the last point located (0: not known): the first step
+      !> of the secant that locates the next point
+      real(wp) :: slope = 0.0_wp
+      !> ind_* of the indicator that changed sign across the last located bracket
+      integer :: ind = ind_loads
    end type tracker_type
 
 contains
@@ -148,7 +184,144 @@ contains
          call scan_alpha(map, j)
       end do
       call fill_regions(map)
+      call find_special_points(map)
    end subroutine adhesion_map
+
+   !> "pull-off: jump case 1 -> jump case 2 turns back in alpha" and the like.
+   pure function special_meaning(point) result(text)
+      type(map_point), intent(in) :: point
+      character(len=:), allocatable :: text
+      select case (point%kind)
+      case (map_point_meet)
+         text = boundary_meaning(point%codes(1))//" meets "// &
+            boundary_meaning(point%codes(2))
+      case (map_point_turn)
+         text = boundary_meaning(point%codes(1))//" turns back in alpha (meets its "// &
+            "reverse "//code_text(point%codes(2))//"; the region between closes)"
+      case (map_point_end)
+         text = boundary_meaning(point%codes(1))//" ends (its region closes)"
+      case (map_point_fail)
+         text = boundary_meaning(point%codes(1))//": the load path fails here"
+      case default
+         text = "unknown"
+      end select
+   end function special_meaning
+
+   pure function code_text(code) result(text)
+      integer, intent(in) :: code
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') code
+      text = trim(buf)
+   end function code_text
+
+   !> Every curve end inside the grid (map_end_inside, map_end_failed) becomes a special
+   !> point: a turn where it coincides with an end of the reverse curve, a meeting where it
+   !> coincides with an end of, or lies on, another curve, else an end (or a failure).
+   !> Coincide: within one grid step in ln alpha (at least 1e-3; a curve whose
+   !> continuation fails short of its true end stops at the last grid point) and 0.1 in
+   !> ln mu (near a turn mu varies like the square root of the distance in alpha). Each
+   !> pair of coinciding ends gives one point (at the mean of the two in logs).
+   pure subroutine find_special_points(map)
+      type(map_type), intent(inout) :: map
+      real(wp), parameter :: tol_m = 1.0e-1_wp
+      real(wp) :: tol_a
+      type(map_point) :: pt
+      real(wp) :: a, m, a2, m2
+      integer :: c, e, c2, e2, kind, kind2
+      logical :: used(max_boundaries, 2), found
+      allocate (map%special(0))
+      used = .false.
+      tol_a = 1.0e-3_wp
+      if (size(map%alpha) > 1) tol_a = max(tol_a, 1.01_wp*maxval(log(map%alpha(2:)/ &
+         map%alpha(:size(map%alpha) - 1))))
+      do c = 1, map%n_boundaries
+         do e = 1, 2
+            if (used(c, e)) cycle
+            call end_of(c, e, a, m, kind)
+            if (kind /= map_end_inside .and. kind /= map_end_failed) cycle
+            used(c, e) = .true.
+            pt%alpha = a
+            pt%mu = m
+            pt%codes = [map%boundary(c)%code, 0]
+            pt%kind = merge(map_point_fail, map_point_end, kind == map_end_failed)
+            found = .false.
+            do c2 = 1, map%n_boundaries              ! an end of another curve here
+               if (c2 == c) cycle
+               do e2 = 1, 2
+                  if (used(c2, e2)) cycle
+                  call end_of(c2, e2, a2, m2, kind2)
+                  if (kind2 /= map_end_inside .and. kind2 /= map_end_failed) cycle
+                  if (abs(log(a2/a)) > tol_a .or. abs(log(m2/m)) > tol_m) cycle
+                  used(c2, e2) = .true.
+                  pt%codes(2) = map%boundary(c2)%code
+                  pt%kind = merge(map_point_turn, map_point_meet, &
+                     reverse(map%boundary(c)%code) == map%boundary(c2)%code)
+                  pt%alpha = sqrt(a*a2)
+                  pt%mu = sqrt(m*m2)
+                  found = .true.
+                  exit
+               end do
+               if (found) exit
+            end do
+            if (.not. found) then                 ! on another curve
+               do c2 = 1, map%n_boundaries
+                  if (c2 == c) cycle
+                  if (on_curve(map%boundary(c2), a, m)) then
+                     pt%codes(2) = map%boundary(c2)%code
+                     pt%kind = map_point_meet
+                     exit
+                  end if
+               end do
+            end if
+            map%special = [map%special, pt]
+            map%n_special = map%n_special + 1
+         end do
+      end do
+   contains
+      pure subroutine end_of(ci, ei, ae, me, ke)
+         integer, intent(in) :: ci, ei
+         real(wp), intent(out) :: ae, me
+         integer, intent(out) :: ke
+         associate (b => map%boundary(ci))
+            if (ei == 1) then
+               ae = b%alpha(1)
+               me = b%mu(1)
+               ke = b%start_kind
+            else
+               ae = b%alpha(b%n)
+               me = b%mu(b%n)
+               ke = b%end_kind
+            end if
+         end associate
+      end subroutine end_of
+
+      pure integer function reverse(code)
+         integer, intent(in) :: code
+         reverse = 100*(code/100) + 10*mod(code, 10) + mod(code/10, 10)
+      end function reverse
+
+      !> (a, m) within tol_a of the curve's alpha span and tol_m in ln mu of its polyline
+      pure logical function on_curve(b, a, m)
+         type(map_boundary), intent(in) :: b
+         real(wp), intent(in) :: a, m
+         real(wp) :: f, mi
+         integer :: i
+         on_curve = .false.
+         do i = 1, b%n - 1
+            if (.not. (a >= b%alpha(i)*(1.0_wp - tol_a) .and. &
+               a <= b%alpha(i + 1)*(1.0_wp + tol_a))) cycle
+            f = 0.0_wp
+            if (b%alpha(i + 1) > b%alpha(i)) f = min(1.0_wp, max(0.0_wp, &
+               log(a/b%alpha(i))/log(b%alpha(i + 1)/b%alpha(i))))
+            mi = exp(log(b%mu(i)) + f*log(b%mu(i + 1)/b%mu(i)))
+            if (abs(log(m/mi)) <= tol_m) then
+               on_curve = .true.
+               return
+            end if
+         end do
+      end function on_curve
+   end subroutine find_special_points
 
    subroutine check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)
       integer, intent(in) :: model, n_mu
@@ -292,7 +465,7 @@ contains
       type(tracker_type) :: tr
       type(probe_type) :: pa, pb
       type(map_boundary) :: fwd, bwd, curve
-      real(wp) :: t
+      real(wp) :: t, slope0
       integer :: stat, m_hi, k_fwd, k_bwd
 
       tr%model = map%model
@@ -309,7 +482,9 @@ contains
          map%n_paths = map%n_paths + tr%n_paths
          return
       end if
+      slope0 = tr%slope
       call continue_curve(tr, map%alpha, j, t, +1, fwd, k_fwd)
+      tr%slope = slope0
       call continue_curve(tr, map%alpha, j, t, -1, bwd, k_bwd)
       map%n_paths = map%n_paths + tr%n_paths
       curve%which = which
@@ -434,7 +609,7 @@ contains
          end if
       end do
       if (.not. refined(n)) then            ! the last point found before the end, refined
-         call locate(tr, exp(x(n)), y(n), 1.0e-6_wp, t, kind)
+         call locate(tr, exp(x(n)), y(n), 1.0e-3_wp, t, kind)
          if (kind == -1) then
             y(n) = t
             refined(n) = .true.
@@ -475,7 +650,7 @@ contains
       !> Only bracket the change (t = the bracket's middle): enough to know it is there
       logical, intent(in), optional :: bracket_only
       type(probe_type) :: p0, p1
-      real(wp) :: t0, t1, d
+      real(wp) :: t0, t1, d, tol
       integer :: dir, m0, stat, m_hi, tries
 
       t = t_pred
@@ -483,6 +658,15 @@ contains
       if (t_pred < tr%t_min .or. t_pred > tr%t_max) then
          kind = map_end_mu_range
          return
+      end if
+      if (tr%slope /= 0.0_wp .and. .not. optval(bracket_only)) then
+         call secant_point(tr, alpha, t_pred, max(64.0_wp*delta, 4.0e-3_wp), t, kind)
+         if (kind == -1) then
+            if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
+            return
+         end if
+         t = t_pred
+         kind = map_end_inside
       end if
       t0 = t_pred
       call probe(tr%model, alpha, t0, p0)
@@ -511,18 +695,18 @@ contains
       end do
       if (p1%mech(tr%which) == m0) return
       if (p1%mech(tr%which) /= merge(tr%mb, tr%ma, dir == 1)) return
-      if (present(bracket_only)) then
-         if (bracket_only) then
-            t = 0.5_wp*(t0 + t1)
-            kind = -1
-            if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
-            return
-         end if
+      if (optval(bracket_only)) then      ! enough to know the curve is there (and not
+         t = 0.5_wp*(t0 + t1)             ! another change of the same pair, farther off)
+         if (abs(t - t_pred) > 5.0e-2_wp) return
+         kind = -1
+         if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
+         return
       end if
+      tol = tol_t
       if (dir == 1) then
-         call refine(tr, alpha, t0, p0, t1, p1, t, m_hi, stat)
+         call refine(tr, alpha, t0, p0, t1, p1, t, m_hi, stat, tol)
       else
-         call refine(tr, alpha, t1, p1, t0, p0, t, m_hi, stat)
+         call refine(tr, alpha, t1, p1, t0, p0, t, m_hi, stat, tol)
       end if
       if (stat /= wa_ok) then
          kind = map_end_failed
@@ -532,39 +716,177 @@ contains
       end if
    end subroutine locate
 
+   pure logical function optval(flag)
+      logical, intent(in), optional :: flag
+      optval = .false.
+      if (present(flag)) optval = flag
+   end function optval
+
+   !> The change near t_pred located from the indicator alone, with the slope of the
+   !> last point as the first (Newton) step, then secant steps; once a step is below
+   !> 1e-6 the bracket is closed by probes 0.45 tol_t either side of the estimate.
+   !> Every probe must classify as tr%ma below the change and tr%mb above it. kind = -1
+   !> when located (t, with a bracket <= tol_t), else map_end_inside: the caller falls
+   !> back to bracketing and refine (the curve ends, flickers, or the indicator fails).
+   subroutine secant_point(tr, alpha, t_pred, reach, t, kind)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: alpha, t_pred, reach
+      real(wp), intent(out) :: t
+      integer, intent(out) :: kind
+      integer, parameter :: max_probes = 10
+      type(probe_type) :: px, ps(max_probes)
+      real(wp) :: t_lo, t_hi, hx(2), hg(2), r, x, g, slope, ts(max_probes)
+      logical :: have_lo, have_hi, missing
+      integer :: n_probes, nh, side, i_lo, i_hi
+
+      kind = map_end_inside
+      t = t_pred
+      if (tr%ind == ind_none) return
+      i_lo = 0
+      i_hi = 0
+      have_lo = .false.
+      have_hi = .false.
+      missing = .false.
+      t_lo = 0.0_wp
+      t_hi = 0.0_wp
+      nh = 0
+      hx = 0.0_wp
+      hg = 0.0_wp
+      n_probes = 0
+      x = t_pred
+      if (.not. sample(x)) return
+      do while (n_probes < max_probes)
+         if (have_lo .and. have_hi) then
+            if (t_hi - t_lo <= tol_t) exit
+         end if
+         slope = tr%slope
+         if (nh == 2) then
+            if (hx(2) /= hx(1)) slope = (hg(2) - hg(1))/(hx(2) - hx(1))
+         end if
+         if (.not. (slope /= 0.0_wp .and. ieee_is_finite(slope))) return
+         r = hx(2) - hg(2)/slope
+         if (abs(r - t_pred) > reach) return
+         if (have_lo .and. have_hi) then        ! keep inside the bracket
+            if (.not. (r > t_lo .and. r < t_hi) .or. missing) r = 0.5_wp*(t_lo + t_hi)
+         else if (missing) then
+            return
+         end if
+         if (abs(r - hx(2)) > 1.0e-6_wp) then
+            if (.not. sample(r)) return
+            cycle
+         end if
+         ! close the bracket around r (keep an end already within tol_t/2 of it)
+         side = 0
+         if (have_lo) then
+            if (r - t_lo < 0.5_wp*tol_t .and. r > t_lo) side = -1
+         end if
+         if (side /= -1) then
+            if (.not. sample(r - 0.45_wp*tol_t)) return
+         end if
+         side = 0
+         if (have_hi) then
+            if (t_hi - r < 0.5_wp*tol_t .and. t_hi > r) side = 1
+         end if
+         if (side /= 1) then
+            if (.not. sample(r + 0.45_wp*tol_t)) return
+         end if
+      end do
+      if (.not. (have_lo .and. have_hi)) return
+      if (.not. (t_hi - t_lo <= tol_t)) return
+      t = 0.5_wp*(t_lo + t_hi)
+      kind = -1
+      call learn(tr, ts(1:n_probes), ps(1:n_probes), i_lo, i_hi, t)
+   contains
+      !> Probe at xs: false when the load path fails, the indicator is missing, the
+      !> mechanism is neither of the pair, or the order contradicts the bracket.
+      logical function sample(xs)
+         real(wp), intent(in) :: xs
+         sample = .false.
+         call probe(tr%model, alpha, xs, px)
+         tr%n_paths = tr%n_paths + 1
+         n_probes = n_probes + 1
+         ts(n_probes) = xs
+         ps(n_probes) = px
+         if (px%status /= wa_ok) return
+         g = indicator(tr, px)
+         missing = .not. ieee_is_finite(g)    ! bracket only (bisect), unless nothing else
+         if (missing .and. nh == 0) return
+         if (px%mech(tr%which) == tr%ma) then
+            if (have_hi) then
+               if (xs >= t_hi) return
+            end if
+            if (.not. have_lo .or. xs > t_lo) then
+               t_lo = xs
+               i_lo = n_probes
+            end if
+            have_lo = .true.
+         else if (px%mech(tr%which) == tr%mb) then
+            if (have_lo) then
+               if (xs <= t_lo) return
+            end if
+            if (.not. have_hi .or. xs < t_hi) then
+               t_hi = xs
+               i_hi = n_probes
+            end if
+            have_hi = .true.
+         else
+            return
+         end if
+         if (.not. missing) then
+            hx = [hx(2), xs]
+            hg = [hg(2), g]
+            nh = min(nh + 1, 2)
+         end if
+         sample = .true.
+      end function sample
+   end subroutine secant_point
+
    !> Shrink [t_lo, t_hi] (mechanisms tr%ma at t_lo, other at t_hi) to tol_t: secant on
    !> the indicator of the tracker's pair, bisection whenever two steps do not halve the
    !> bracket or the indicator is missing. t = the midpoint; m_hi = mechanism at t_hi.
-   subroutine refine(tr, alpha, t_lo_in, p_lo, t_hi_in, p_hi, t, m_hi, status)
+   subroutine refine(tr, alpha, t_lo_in, p_lo, t_hi_in, p_hi, t, m_hi, status, tol_in)
       type(tracker_type), intent(inout) :: tr
       real(wp), intent(in) :: alpha, t_lo_in, t_hi_in
+      !> Width of the final bracket (default tol_t)
+      real(wp), intent(in), optional :: tol_in
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp), intent(out) :: t
       integer, intent(out) :: m_hi, status
       real(wp), parameter :: fallback(6) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp]
-      type(probe_type) :: px
-      real(wp) :: t_lo, t_hi, hx(2), hg(2), x, g, w_old(2)
-      integer :: nh, it, k
+      integer, parameter :: max_hist = 64
+      type(probe_type) :: px, ps(max_hist)
+      real(wp) :: t_lo, t_hi, hx(2), hg(2), x, g, w_old(2), ts(max_hist)
+      integer :: nh, it, k, n, i_lo, i_hi
       logical :: bisect
+      real(wp) :: tol
 
+      tol = tol_t
+      if (present(tol_in)) tol = tol_in
       t_lo = t_lo_in
       t_hi = t_hi_in
       m_hi = p_hi%mech(tr%which)
       status = wa_ok
       nh = 0
+      n = 2
+      ts(1:2) = [t_lo, t_hi]
+      ps(1) = p_lo
+      ps(2) = p_hi
+      i_lo = 1
+      i_hi = 2
+      call choose_indicator(tr, p_lo, p_hi)
       call remember(t_lo, indicator(tr, p_lo))
       call remember(t_hi, indicator(tr, p_hi))
       w_old = huge(1.0_wp)
       do it = 1, 200
-         if (t_hi - t_lo <= tol_t) exit
+         if (t_hi - t_lo <= tol) exit
          bisect = nh < 2 .or. t_hi - t_lo > 0.5_wp*w_old(1)
          x = 0.5_wp*(t_lo + t_hi)
          if (.not. bisect) then
             if (hg(2) /= hg(1)) x = hx(2) - hg(2)*(hx(2) - hx(1))/(hg(2) - hg(1))
             if (.not. (x > t_lo .and. x < t_hi)) x = 0.5_wp*(t_lo + t_hi)
          end if
-         x = min(max(x, t_lo + 0.45_wp*tol_t), t_hi - 0.45_wp*tol_t)
+         x = min(max(x, t_lo + 0.45_wp*tol), t_hi - 0.45_wp*tol)
          do k = 1, size(fallback)
             call probe(tr%model, alpha, x, px)
             tr%n_paths = tr%n_paths + 1
@@ -576,17 +898,26 @@ contains
             exit
          end if
          w_old = [w_old(2), t_hi - t_lo]
+         if (n < max_hist) then
+            n = n + 1
+            ts(n) = x
+            ps(n) = px
+         end if
          if (px%mech(tr%which) == tr%ma) then
             t_lo = x
+            i_lo = n
          else
             t_hi = x
+            i_hi = n
             m_hi = px%mech(tr%which)
          end if
          g = indicator(tr, px)
          call remember(x, g)
       end do
-      if (status == wa_ok .and. t_hi - t_lo > tol_t) status = wa_not_converged
+      if (status == wa_ok .and. t_hi - t_lo > tol) status = wa_not_converged
       t = 0.5_wp*(t_lo + t_hi)
+      if (status == wa_ok .and. ts(i_lo) == t_lo .and. ts(i_hi) == t_hi .and. tol == tol_t) &
+         call learn(tr, ts(1:n), ps(1:n), i_lo, i_hi, t)
    contains
       subroutine remember(tx, gx)
          real(wp), intent(in) :: tx, gx
@@ -597,28 +928,108 @@ contains
       end subroutine remember
    end subroutine refine
 
+   !> The indicator of kind tr%ind at p (NaN where missing).
+   pure real(wp) function indicator(tr, p)
+      type(tracker_type), intent(in) :: tr
+      type(probe_type), intent(in) :: p
+      indicator = indicator_of(tr, tr%ind, p)
+   end function indicator
+
+   pure real(wp) function indicator_of(tr, ind, p)
+      type(tracker_type), intent(in) :: tr
+      integer, intent(in) :: ind
+      type(probe_type), intent(in) :: p
+      select case (ind)
+      case (ind_loads)
+         indicator_of = load_indicator(tr, p)
+      case (ind_f_start)
+         indicator_of = p%f_start
+      case (ind_a_pf)
+         indicator_of = p%ln_a_pf
+         if (tr%which /= 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
+      case default
+         indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
+      end select
+   end function indicator_of
+
+   !> tr%ind = the first indicator whose signs differ at the bracket ends p_lo, p_hi
+   !> (ind_none if none does).
+   pure subroutine choose_indicator(tr, p_lo, p_hi)
+      type(tracker_type), intent(inout) :: tr
+      type(probe_type), intent(in) :: p_lo, p_hi
+      real(wp) :: g_lo, g_hi
+      integer :: ind
+      do ind = ind_loads, ind_a_pf
+         g_lo = indicator_of(tr, ind, p_lo)
+         g_hi = indicator_of(tr, ind, p_hi)
+         if (ieee_is_finite(g_lo) .and. ieee_is_finite(g_hi) .and. &
+            ((g_lo <= 0.0_wp .and. g_hi >= 0.0_wp) .or. (g_lo >= 0.0_wp .and. g_hi <= 0.0_wp)) &
+            .and. g_lo /= g_hi) then
+            tr%ind = ind
+            return
+         end if
+      end do
+      tr%ind = ind_none
+   end subroutine choose_indicator
+
+   !> After a point is located at t (bracket ends ts(i_lo), ts(i_hi)): the indicator
+   !> that changes sign across the bracket, and its slope in ln mu from the two probes
+   !> nearest t at least 1e-7 apart (else the bracket ends): the next point's first step.
+   pure subroutine learn(tr, ts, ps, i_lo, i_hi, t)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: ts(:), t
+      type(probe_type), intent(in) :: ps(:)
+      integer, intent(in) :: i_lo, i_hi
+      real(wp) :: g(size(ts)), best, d, slope
+      integer :: i, k, bi, bk
+      call choose_indicator(tr, ps(i_lo), ps(i_hi))
+      tr%slope = 0.0_wp
+      if (tr%ind == ind_none) return
+      do i = 1, size(ts)
+         g(i) = indicator(tr, ps(i))
+      end do
+      bi = i_lo
+      bk = i_hi
+      best = huge(1.0_wp)
+      do i = 1, size(ts)
+         do k = i + 1, size(ts)
+            if (.not. (ieee_is_finite(g(i)) .and. ieee_is_finite(g(k)))) cycle
+            if (abs(ts(i) - ts(k)) < 1.0e-7_wp) cycle
+            d = max(abs(ts(i) - t), abs(ts(k) - t))
+            if (d < best) then
+               best = d
+               bi = i
+               bk = k
+            end if
+         end do
+      end do
+      if (ts(bi) == ts(bk)) return
+      slope = (g(bk) - g(bi))/(ts(bk) - ts(bi))
+      if (ieee_is_finite(slope)) tr%slope = slope
+   end subroutine learn
+
    !> The smooth quantity that vanishes where the tracker's mechanisms change (NaN when
    !> this load path lacks one of the loads): for full contact the larger of the competing
    !> maximum loads minus the other (against a snap: the largest load of the curve, whose
    !> sign decides whether the curve crosses P* = 0); for pull-off the difference of the
    !> competing minimum loads (gradual: P* at a* -> 0).
-   pure real(wp) function indicator(tr, p)
+   pure real(wp) function load_indicator(tr, p)
       type(tracker_type), intent(in) :: tr
       type(probe_type), intent(in) :: p
       integer :: k
       if (tr%which == 1) then
          if (tr%ma == mechanism_snap .or. tr%mb == mechanism_snap) then
-            indicator = -huge(1.0_wp)
+            load_indicator = -huge(1.0_wp)
             do k = 0, 2
-               if (ieee_is_finite(p%v_fc(k))) indicator = max(indicator, p%v_fc(k))
+               if (ieee_is_finite(p%v_fc(k))) load_indicator = max(load_indicator, p%v_fc(k))
             end do
          else
-            indicator = p%v_fc(tr%ma) - p%v_fc(tr%mb)
+            load_indicator = p%v_fc(tr%ma) - p%v_fc(tr%mb)
          end if
       else
-         indicator = p%v_pf(tr%ma) - p%v_pf(tr%mb)
+         load_indicator = p%v_pf(tr%ma) - p%v_pf(tr%mb)
       end if
-   end function indicator
+   end function load_indicator
 
    !> Trace the branch at (alpha, exp(t)), follow the load path, keep the mechanisms and
    !> the competing loads.
@@ -629,26 +1040,39 @@ contains
       type(params_type) :: params
       type(branch_type) :: br
       type(path_type) :: path
+      type(trace_options) :: opts
       real(wp) :: nan
       integer :: i, n, zc
       character(len=256) :: msg
 
       msg = ""
-      nan = 0.0_wp
-      nan = nan/nan
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
       p%v_fc = nan
       p%v_pf = nan
+      p%f_start = nan
+      p%ln_a_pf = nan
       call new_params(alpha, exp(t), params, p%status, msg)
       if (p%status /= wa_ok) return
       call trace_branch(model, params, br, p%status, msg)
       if (p%status /= wa_ok) return
-      call path_from_branch(model, params, br, path, p%status, msg)
+      call path_from_branch(model, params, br, path, p%status, msg, mechanisms_only=.true.)
       if (p%status /= wa_ok) return
       p%mech = [path%fc_mechanism, path%pf_mechanism]
+      p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
+      do i = path%n, 1, -1
+         if (path%event(i) /= event_pull_off) cycle
+         if (path%a_star(i) >= opts%a_start) p%ln_a_pf = log(path%a_star(i)/a_point_pull_off)
+         exit
+      end do
       n = br%n
       p%v_fc(0) = br%p_star(n)
       p%v_fc(3) = 0.0_wp
-      p%v_pf(0) = br%p_star(1)
+      do i = 1, n                         ! the contact curve's a* -> 0 end (MD: after
+         if (br%a_star(i) > 0.0_wp) then  ! the pieces without contact)
+            p%v_pf(0) = br%p_star(i)
+            exit
+         end if
+      end do
       do i = 2, n - 1
          zc = merge(1, 2, br%zone_case(i) == zone_inside)
          if (br%extremum(i) == 1) then

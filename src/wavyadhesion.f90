@@ -26,7 +26,8 @@ module wavyadhesion
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
    use wa_map, only: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
-      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed, map_point, &
+      special_meaning, map_point_meet, map_point_turn, map_point_end, map_point_fail
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost
@@ -62,7 +63,8 @@ module wavyadhesion
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap
    public :: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
-      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
+      map_end_grid, map_end_inside, map_end_mu_range, map_end_failed, map_point, &
+      special_meaning, map_point_meet, map_point_turn, map_point_end, map_point_fail
 
    public :: wa_version
    public :: gap_critical_type, gap_critical, gap_critical_sweep, gap_critical_values, &

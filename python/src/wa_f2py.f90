@@ -600,7 +600,7 @@ end subroutine fa_critical_sweep
 !> capacity points are written).
 subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, scan_every, &
       code, alpha_out, mu_out, curve, end_kinds, n_out, mu_grid, fc_region, pf_region, &
-      n_paths, status, message)
+      n_paths, status, message, special_kind, special_codes, special_point, n_special)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_map, only: map_type, adhesion_map
@@ -634,6 +634,11 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
    integer(c_int), intent(out) :: n_paths
    integer(c_int), intent(out) :: status
    character(len=256), intent(out) :: message
+   !> Special points (wa_map::map_point, at most 128): kind, the boundary codes involved
+   !> (second 0 if one), alpha and mu; n_special of them
+   integer(c_int), intent(out) :: special_kind(128), special_codes(2, 128)
+   real(c_double), intent(out) :: special_point(2, 128)
+   integer(c_int), intent(out) :: n_special
    !f2py threadsafe
    type(map_type) :: map
    integer :: c, p, n, stat
@@ -641,6 +646,7 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
    message = ""
    code = 0; alpha_out = 0; mu_out = 0; curve = 0; end_kinds = 0; mu_grid = 0
    fc_region = -1; pf_region = -1; n_paths = 0
+   special_kind = 0; special_codes = 0; special_point = 0; n_special = 0
    n = 0
    call adhesion_map(int(model), alpha, mu_lo, mu_hi, int(n_mu), map, stat, message, &
       scan_every=int(scan_every))
@@ -649,6 +655,12 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
       fc_region = map%fc_region
       pf_region = map%pf_region
       n_paths = map%n_paths
+      n_special = int(min(map%n_special, 128), c_int)
+      do c = 1, n_special
+         special_kind(c) = map%special(c)%kind
+         special_codes(:, c) = map%special(c)%codes
+         special_point(:, c) = [map%special(c)%alpha, map%special(c)%mu]
+      end do
       do c = 1, map%n_boundaries
          do p = 1, map%boundary(c)%n
             n = n + 1

@@ -68,8 +68,8 @@ def test_one_call_per_alpha_chunk(monkeypatch):
 
 def test_mechanisms_dw_alpha03():
     """The changes the CLI locates for DW, alpha 0.3: P_pf gradual -> jump case 1 at
-    mu = 0.299, P_fc gradual -> jump case 1 at 2.773, P_pf jump case 1 -> case 2 at 4.887."""
-    crit = wa.critical_forces("dw", 0.3, [0.29, 0.31, 2.7, 2.85, 4.8, 5.0])
+    mu = 0.580, P_fc gradual -> jump case 1 at 2.773, P_pf jump case 1 -> case 2 at 4.887."""
+    crit = wa.critical_forces("dw", 0.3, [0.57, 0.59, 2.7, 2.85, 4.8, 5.0])
     assert [wa.MECHANISMS[m] for m in crit.fc_mechanism] == [
         "gradual", "gradual", "gradual", "jump_case1", "jump_case1", "jump_case1"]
     assert [wa.MECHANISMS[m] for m in crit.pf_mechanism] == [

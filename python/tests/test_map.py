@@ -66,3 +66,16 @@ def test_plotting(small_map):
     fig = plotting.adhesion_map(small_map)
     ax = fig.axes[0]
     assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
+
+
+def test_special_points():
+    """Where boundaries meet: DW full contact 101 meets 103 at alpha ~ 0.567, mu ~ 2.95
+    (the local maximum of P* reaches 0); each point says what it is in words."""
+    m = wa.adhesion_map("dw", (0.3, 1.0, 40), (0.1, 10, 30))
+    meets = [p for p in m.special if p.kind == "meet" and set(p.codes) == {101, 103}]
+    assert len(meets) == 1
+    assert meets[0].alpha == pytest.approx(0.567, rel=1e-2)
+    assert meets[0].mu == pytest.approx(2.95, rel=1e-2)
+    assert meets[0].meaning == ("full contact: gradual -> jump case 1 meets full contact: "
+                                "gradual -> snap at P=0")
+    assert all(isinstance(p, wa.SpecialPoint) for p in m.special)

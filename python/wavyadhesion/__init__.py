@@ -22,7 +22,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 (matplotlib is imported only when one of them is called).
 """
 
-from ._map import AdhesionMap, Boundary, adhesion_map, boundary_meaning
+from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_meaning
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._core import (
     EVENTS,
@@ -69,6 +69,7 @@ __all__ = [
     "gap_critical",
     "AdhesionMap",
     "Boundary",
+    "SpecialPoint",
     "adhesion_map",
     "boundary_meaning",
     "EVENTS",

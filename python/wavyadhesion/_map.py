@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -50,6 +51,35 @@ class Boundary:
         return boundary_meaning(self.code)
 
 
+#: Kinds of special points (wa_map's map_point_*), by code.
+SPECIAL_KINDS = {1: "meet", 2: "turn", 3: "end", 4: "load path fails"}
+
+
+@dataclass(frozen=True)
+class SpecialPoint:
+    """Where boundaries meet (``kind`` "meet"), where one turns back in alpha ("turn": it
+    meets its reverse, e.g. 212 and 221, and the region between closes), where one ends
+    alone ("end": its region closes), or where the load path fails; ``codes`` are the
+    boundary codes involved (one or two), ``meaning`` says it in words."""
+
+    kind: str
+    alpha: float
+    mu: float
+    codes: tuple
+
+    @property
+    def meaning(self) -> str:
+        first = boundary_meaning(self.codes[0])
+        if self.kind == "meet":
+            return f"{first} meets {boundary_meaning(self.codes[1])}"
+        if self.kind == "turn":
+            return (f"{first} turns back in alpha (meets its reverse {self.codes[1]}; "
+                    "the region between closes)")
+        if self.kind == "end":
+            return f"{first} ends (its region closes)"
+        return f"{first}: the load path fails here"
+
+
 @dataclass(frozen=True)
 class AdhesionMap:
     """Boundaries and regions of one model over an (alpha, mu) grid.
@@ -74,6 +104,8 @@ class AdhesionMap:
     westergaard: Optional[np.ndarray] = None
     jkr_fc: Optional[np.ndarray] = None
     jkr_P_fc: Optional[np.ndarray] = field(default=None, repr=False)
+    #: Where boundaries meet, turn back, end or fail inside the grid (SpecialPoint)
+    special: list = field(default_factory=list)
 
 
 def _grid(spec, name):
@@ -118,15 +150,15 @@ def _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo, tol=1e-9):
 
 def _alpha_chunk(args):
     """Boundaries crossed in alpha at one mu (module level: picklable)."""
-    model, which, mu, a_lo, a_hi, m_lo = args
-    return _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo)
+    model, which, mu, a_lo, a_hi, m_lo, tol = args
+    return _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo, tol)
 
 
-def _vertical_boundaries(model, alpha, mu, regions, executor):
+def _vertical_boundaries(model, alpha, mu, regions, executor, tol=1e-9):
     """Changes of mechanism between neighbouring alpha columns that no mu boundary
     explains (the cells above and below agree on each side): a boundary crossed in alpha,
     such as full contact: jump case 1 -> snap (DW, MD near alpha = 0.57 for large mu),
-    located by bisection in alpha at that mu to 1e-9 relative."""
+    located by bisection in alpha at that mu to `tol` relative (default 1e-9)."""
     jobs = []
     for which, reg in ((1, regions[0]), (2, regions[1])):
         for i in range(1, reg.shape[0] - 1):
@@ -137,7 +169,7 @@ def _vertical_boundaries(model, alpha, mu, regions, executor):
                 if (reg[i - 1:i + 2, j] == a).all() and (reg[i - 1:i + 2, j + 1] == b).all():
                     jobs.append((which, int(a), int(b), float(mu[i]), float(alpha[j]),
                                  float(alpha[j + 1])))
-    found = run_chunks(_alpha_chunk, [(str(model), w, m, lo, hi, a)
+    found = run_chunks(_alpha_chunk, [(str(model), w, m, lo, hi, a, float(tol))
                                       for (w, a, b, m, lo, hi) in jobs], executor)
     curves = {}
     for (which, a, b, m, _lo, _hi), alpha_b in zip(jobs, found):
@@ -152,7 +184,8 @@ def _vertical_boundaries(model, alpha, mu, regions, executor):
 
 
 def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60), *,
-                 forces: bool = False, scan_every: int = 20, executor=None) -> AdhesionMap:
+                 forces: bool = False, scan_every: int = 20, executor=None,
+                 alpha_tol: float = 1e-9) -> AdhesionMap:
     """The adhesion map of the (alpha, mu) plane for "dw" or "md".
 
     Parameters
@@ -171,8 +204,11 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         The coarse mu scan that discovers boundaries runs at every scan_every-th alpha.
     executor : concurrent.futures.Executor, optional
         Runs the force grid (one chunk per alpha) and the bisections in alpha on it; the
-        boundaries in mu are continued in one Fortran call (serial). Results equal the
-        serial ones.
+        boundaries in mu are continued in one Fortran call (serial), in a thread of its
+        own while the executor works on the force grid. Results equal the serial ones.
+    alpha_tol : float
+        Relative accuracy in alpha of the boundaries crossed in alpha (``forces=True``;
+        default 1e-9; a figure needs far less, e.g. 1e-5).
 
     Returns
     -------
@@ -188,10 +224,28 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     if not (isinstance(mu_range, tuple) and len(mu_range) == 3):
         raise InvalidArgumentError("mu_range must be (lo, hi, n)", 1)
     mu_lo, mu_hi, n_mu = float(mu_range[0]), float(mu_range[1]), int(mu_range[2])
+    if not 1e-15 <= float(alpha_tol) <= 0.1:
+        raise InvalidArgumentError(f"alpha_tol = {alpha_tol!r}: must be in [1e-15, 0.1]", 1)
     capacity = 64 * (alpha.size + 64)
+    args = (max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi, int(scan_every))
+    pending = None
+    if forces and executor is not None and n_mu >= 2 and 0 < mu_lo < mu_hi:
+        # the force grid on the executor while this thread's helper continues the
+        # boundaries (the facade releases the GIL); the grid is Fortran's (checked below)
+        mu_guess = np.exp(np.log(mu_lo) + (np.log(mu_hi) - np.log(mu_lo))
+                          * np.arange(n_mu) / (n_mu - 1))
+        pool = ThreadPoolExecutor(1)
+        future = pool.submit(_f.fa_adhesion_map, *args)
+        try:
+            pending = (mu_guess, run_chunks(
+                _forces_chunk, [(str(model), float(a), mu_guess) for a in alpha], executor))
+        finally:
+            out = future.result()
+            pool.shutdown()
+    else:
+        out = _f.fa_adhesion_map(*args)
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, n_paths, status,
-     message) = _f.fa_adhesion_map(max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi,
-                                   int(scan_every))
+     message, sp_kind, sp_codes, sp_point, n_special) = out
     if status != _OK:
         _raise(status, message)
     n = int(n_out)
@@ -202,13 +256,20 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
             continue
         boundaries.append(Boundary(int(codes[sel[0]]), a_out[sel].copy(), m_out[sel].copy(),
                                    int(kinds[0, sel[0]]), int(kinds[1, sel[0]])))
+    special = [SpecialPoint(SPECIAL_KINDS.get(int(sp_kind[k]), "unknown"),
+                            float(sp_point[0, k]), float(sp_point[1, k]),
+                            tuple(int(c) for c in sp_codes[:, k] if c != 0))
+               for k in range(int(n_special))]
     result = dict(model=str(model), alpha=alpha, mu=np.asarray(mu_grid).copy(),
                   fc_region=np.asarray(fc).copy(), pf_region=np.asarray(pf).copy(),
-                  boundaries=boundaries, n_paths=int(n_paths))
+                  boundaries=boundaries, n_paths=int(n_paths), special=special)
     if forces:
         mu = result["mu"]
-        parts = run_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
-                           executor)
+        if pending is not None and np.array_equal(pending[0], mu):
+            parts = pending[1]
+        else:
+            parts = run_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
+                               executor)
         p_fc = np.stack([p[0] for p in parts], axis=1)
         p_pf = np.stack([p[1] for p in parts], axis=1)
         # every cell computed: the exact region grid replaces the one filled from curves
@@ -218,7 +279,7 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         with np.errstate(invalid="ignore"):
             result["boundaries"] = boundaries + _vertical_boundaries(
                 model, alpha, result["mu"], (result["fc_region"], result["pf_region"]),
-                executor)
+                executor, alpha_tol)
             result.update(P_fc=p_fc, P_pf=p_pf,
                           westergaard=(np.abs(p_fc - 1.0) <= 0.01) & (np.abs(p_pf) <= 0.01),
                           jkr_fc=np.abs(p_fc - jkr[None, :]) <= 0.01 * np.abs(jkr[None, :]),

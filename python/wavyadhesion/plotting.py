@@ -317,6 +317,12 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
         ax.clabel(cs, fmt=lambda v: f"$-P_{{pf}}^*$={v:g}", fontsize=7, inline=True)
     for b in amap.boundaries:
         ax.plot(b.alpha, b.mu, color="k", lw=1.6, ls="-" if b.code % 1000 < 200 else "--")
+    markers = {"meet": ("o", "k"), "turn": ("D", "tab:red"), "end": ("s", "tab:blue"),
+               "load path fails": ("x", "tab:orange")}
+    for p in getattr(amap, "special", []):
+        m, c = markers.get(p.kind, ("o", "k"))
+        ax.plot([p.alpha], [p.mu], ls="none", marker=m, ms=6, mfc=c, mec="white" if
+                m != "x" else c, mew=0.8, zorder=5)
     if labels:
         la, lm = np.log10(alpha), np.log10(mu)
         for k, v in enumerate(present):
@@ -350,6 +356,13 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
     from matplotlib.patches import Patch
     handles = [Line2D([], [], color="k", lw=1.6, label="full-contact boundary"),
                Line2D([], [], color="k", lw=1.6, ls="--", label="pull-off boundary")]
+    kinds = sorted({p.kind for p in getattr(amap, "special", [])})
+    handles += [Line2D([], [], ls="none", marker=markers[k][0], mfc=markers[k][1],
+                       mec=markers[k][1], label={"meet": "boundaries meet",
+                                                 "turn": "boundary turns back in alpha",
+                                                 "end": "boundary ends (region closes)",
+                                                 "load path fails": "load path fails"}[k])
+                for k in kinds if k in markers]
     if amap.westergaard is not None:
         handles += [Patch(fc="none", ec="0.35", hatch="////",
                           label="Westergaard within 1 % (P_fc and P_pf)"),

@@ -666,7 +666,7 @@ static void test_load_path(void) {
 }
 
 /* Sweeps: the mechanisms the CLI's mechanism notes locate (DW, alpha 0.3: P_pf gradual ->
-   jump case 1 at mu 0.299, P_fc gradual -> jump case 1 at 2.77, P_pf jump case 1 -> case 2
+   jump case 1 at mu 0.580, P_fc gradual -> jump case 1 at 2.77, P_pf jump case 1 -> case 2
    at 4.89); an invalid mu anywhere fails the whole sweep before any work. */
 static void test_critical_sweep(void) {
    double mu[3] = {0.1, 1.0, 5.0}, fc[3], pf[3];

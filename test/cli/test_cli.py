@@ -424,6 +424,18 @@ def test_map_rows_and_header(cli):
     assert abs(mu_101 - fc) <= 1e-8 * fc
 
 
+def test_map_special_points_in_header(cli):
+    """Where boundaries meet is a header line: DW 101 meets 103 near alpha 0.567."""
+    res = run(cli, "map", "--model", "dw", "--alpha-range", "0.3:1:40:log", "--mu-range",
+              "0.1:10:30:log")
+    special = [l for l in res.stdout.splitlines() if l.startswith("# special point")]
+    meet = [l for l in special if "gradual -> jump case 1 meets full contact: gradual -> "
+            "snap at P=0" in l]
+    assert len(meet) == 1
+    alpha = float(meet[0].split("alpha")[1].split()[0])
+    assert abs(alpha - 0.567) < 0.01
+
+
 def test_map_csv_and_usage_errors(cli):
     res = run(cli, "map", "--model", "dw", "--alpha", "0.3", "--format", "csv")
     lines = res.stdout.splitlines()
