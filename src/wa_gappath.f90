@@ -1290,6 +1290,10 @@ contains
       if (ch%event(i) == event_switch .and. ch%zone(i + 1) /= zone_full_contact) &
          zone = ch%zone(i + 1)
       call solve_at_a(model, params, x, c_guess, zone, s, status, errmsg)
+      ! an interval that changes zone case without a switch point between (a fold at
+      ! the switch): the equilibrium nearest the guess in any case
+      if (status /= wa_ok .and. zone >= 0 .and. ch%zone(i) /= ch%zone(i + 1)) &
+         call solve_at_a(model, params, x, c_guess, -1, s, status, errmsg)
    end subroutine state_at_param
 
    !> The state at a* = x on chain interval i (t: its position in the interval) without
