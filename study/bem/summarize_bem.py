@@ -28,10 +28,12 @@ def main(path):
                 c=float(t[9]), cl=float(t[10]), near=int(t[12]))
     out = defaultdict(list)
     print("# alpha mu N  trapping_width  max|dP*| approach retract average  "
-          "max|da*| average  max|dc*| average  (single-valued points away from events)")
+          "max|da*| average  max|dc*| average  (single-valued points away from events)  "
+          "max|dP*| near events (either sweep)")
     for (alpha, mu, n), r in sorted(rows.items()):
         gs = sorted({g for (_, g) in r})
         trap, dpa, dpr, dpm, dam, dcm = [], [], [], [], [], []
+        near = [abs(v["p"] - v["pl"]) for v in r.values() if v["near"]]
         for g in gs:
             ap, re = r[("approach", g)], r[("retract", g)]
             if ap["near"] or re["near"] or abs(ap["pl"] - re["pl"]) > 1e-12:
@@ -45,7 +47,8 @@ def main(path):
         vals = [max(v) for v in (trap, dpa, dpr, dpm, dam, dcm)]
         out[(alpha, mu)].append((n, vals))
         print(f"{alpha:g} {mu:g} {n:6d}  {vals[0]:.2e}  {vals[1]:.2e} {vals[2]:.2e} "
-              f"{vals[3]:.2e}  {vals[4]:.1e}  {vals[5]:.1e}   ({len(trap)} points)")
+              f"{vals[3]:.2e}  {vals[4]:.1e}  {vals[5]:.1e}  {max(near):.2e}  "
+              f"({len(trap)} points)")
     print("# least-squares order p in max ~ N^-p over the N of each case")
     names = ("trapping", "dP approach", "dP retract", "dP average", "da average",
              "dc average")

@@ -272,6 +272,22 @@ def library_events(alpha, mu, gmax, probe=1e-3):
 # --------------------------------------------------------------------------------------
 
 
+def functional_check():
+    """Print tamaas's MaugisAdhesionFunctional on uniform gaps (rho = 0.5, w = 2): the
+    potential per node is -w (1 - g/rho) for g < rho, 0 beyond; its gradient w/rho = 4."""
+    n = 4
+    surface = np.zeros(n)
+    f = tm.MaugisAdhesionFunctional(surface)
+    f.parameters = {"rho": 0.5, "surface_energy": 2.0}
+    print("# gap  F/node  -w(1-g/rho)  dF/dg")
+    for g in (0.0, 0.1, 0.25, 0.49, 0.51, 1.0):
+        gap = np.full(n, g)
+        grad = np.zeros(n)
+        f.computeGradF(gap, grad)
+        print(f"{g:5.2f}  {f.computeF(gap, np.zeros(n)) / n: .4f}  "
+              f"{(-2.0 * (1 - g / 0.5) if g < 0.5 else 0.0): .4f}  {grad[0]:.4f}")
+
+
 def westergaard_check(ns, tol, max_iter, log):
     """Non-adhesive mapping check: P* against gbar* = 1 - P* + P* ln P*."""
     gbars = [0.9, 0.5, 0.2, 0.05]
@@ -428,8 +444,13 @@ def main(argv=None):
                     help="compare apart grid points this close to a library event")
     ap.add_argument("--out", default="study/results/bem_md.txt")
     ap.add_argument("--westergaard-only", action="store_true")
+    ap.add_argument("--functional-check", action="store_true",
+                    help="print the Maugis functional on uniform gaps and stop")
     args = ap.parse_args(argv)
     tm.set_log_level(tm.LogLevel.error)
+    if args.functional_check:
+        functional_check()
+        return
     ns = [int(v) for v in args.N.split(",")]
     cases = []
     for c in args.cases.split(","):
