@@ -8,7 +8,7 @@ h(x) = Delta cos(2 pi x / L) against an elastic half-plane (plane strain, E*) wi
 mean gap imposed (PolonskyKeerRey, primal and constraint "gap") and the Dugdale law as the
 MaugisAdhesionFunctional (potential -w (1 - g/rho) for 0 <= g < rho: cohesive stress
 w/rho for g < rho, zero beyond).  The library's dimensionless parameters map onto it as
-(MODEL-NOTES.md, "Scales and parameters"):
+(doc/theory.md, "Parameters"):
 
     p*     = pi E* Delta / L                  (P* = mean traction / p*, compressive > 0)
     w      = alpha^2 pi^2 E* Delta^2 / (2 L)  (alpha = sqrt(2 w L / (pi^2 E* Delta^2)))
