@@ -25,3 +25,6 @@ python3 study/summarize_check.py study/data/samples_check.txt | tee build/study/
 sh tools/md_study.sh study | tee build/study/psi_c.txt
 # 7. the SPEC 9 benchmark, for the record
 fpm run --profile release --example wavyadhesion-benchmark | tee build/study/benchmark.txt
+# Not run here (needs tamaas, ~25 min CPU): the boundary-element cross-check of the MD gap
+# law, doc/accuracy-performance.md section 10:
+#   OMP_NUM_THREADS=1 python study/bem/tamaas_md.py --jobs 2 --out study/results/bem_md.txt
