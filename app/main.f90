@@ -269,17 +269,31 @@ contains
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
       type(path_type) :: path
+      type(branch_type) :: branch
       character(len=256) :: msg
+      character(len=80), allocatable :: notes(:)
+      real(wp) :: energy(64)
       integer :: i, status
 
       msg = ""
-      call load_path(opts%model, params, path, status, msg)
+      call trace_branch(opts%model, params, branch, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
-      call write_header(out, opts%format, "load-controlled loading and unloading", &
-         model_name(opts%model), params, "stage event a_star c_star P_star", &
-         [character(len=80) :: "stage: 1 loading, 2 unloading", event_legend(1), &
+      call path_from_branch(opts%model, params, branch, path, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      call load_jump_energies(opts%model, params, branch, path, energy, status, msg)
+      if (status /= wa_ok) call numerical_error(status, msg)
+      notes = [character(len=80) :: "stage: 1 loading, 2 unloading", event_legend(1), &
          event_legend(2), "P_fc = "//format_real(path%p_fc)//"  P_pf = "// &
-         format_real(path%p_pf), "P-a hysteresis loop area = "//format_real(path%loop_area)])
+         format_real(path%p_pf), "energy released by each jump (units p* Delta per period):"]
+      do i = 1, path%n
+         if (path%event(i) == event_jump_start .and. energy(i) == energy(i)) &
+            notes = [character(len=80) :: notes, "  jump at event "//int_text(i)// &
+            ", P* = "//format_real(path%p_star(i))//": "//format_real(energy(i))]
+      end do
+      notes = [character(len=80) :: notes, "P-a loop area (the paper's measure, not an "// &
+         "energy) = "//format_real(path%loop_area)]
+      call write_header(out, opts%format, "load-controlled loading and unloading", &
+         model_name(opts%model), params, "stage event a_star c_star P_star", notes)
       do i = 1, path%n
          call write_row_ints_first(out, opts%format, [path%stage(i), path%event(i)], &
             [path%a_star(i), path%c_star(i), path%p_star(i)])

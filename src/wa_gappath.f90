@@ -18,7 +18,8 @@ module wa_gappath
    use wa_separation, only: state_mean_gap, md_no_contact_state
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
-      event_a_turn
+      event_a_turn, event_jump_start, event_jump_end
+   use wa_loadpath, only: path_type
    implicit none
    private
 
@@ -29,6 +30,7 @@ module wa_gappath
       gap_event_contact_lost, gap_event_interaction_lost
    !> (appended for gap_critical in wa_gapcritical)
    public :: gap_cycle_critical
+   public :: load_jump_energies
 
    integer, parameter :: gap_stage_approach = 1, gap_stage_retraction = 2
    !> Event codes of a gap-controlled path (3-6 as in wa_branch)
@@ -815,8 +817,8 @@ contains
       else
          noise_p = huge(1.0_wp); noise_g = huge(1.0_wp)
       end if
-      if ((resolved(cov%rule, pc, max(frac*maxval(abs(ch%p)), noise_p)) .and. &
-         resolved(cov%rule, gc, max(frac*maxval(abs(ch%g)), noise_g))) .or. &
+      if ((resolved(cov%rule, pc, max(frac*maxval(abs(ch%p(1:ch%n))), noise_p)) .and. &
+         resolved(cov%rule, gc, max(frac*maxval(abs(ch%g(1:ch%n))), noise_g))) .or. &
          abs(x_of(cov, p, ub) - x_of(cov, p, ua)) <= &
          256.0_wp*epsilon(1.0_wp)*abs(x_of(cov, p, ua))) then
          call store(cov, ua, ub, pc, gc, ic)
@@ -1523,5 +1525,106 @@ contains
          wa_numerical_error, "gap_path: the cycle has no retraction or makes no contact", &
          status, errmsg)
    end subroutine gap_cycle_critical
+
+   ! ------------------------------------------- load-control jump energies
+
+   !> The energy released by each jump of a load-controlled path (path_from_branch of the
+   !> same branch): for a jump at load P0 from state 1 to state 2, the drop of the
+   !> potential E + P0 gbar* (E: the stored energy, elastic and adhesive, dE = -P* dgbar*
+   !> along equilibria) is  int_1^2 (P* - P0) dgbar*  along the branch from 1 to 2 through
+   !> the states in between (doc/theory.md, "Gap control"); units p* Delta, per period.
+   !> energy(k) is set at the jump-start events k; NaN at every other event and at a jump
+   !> that does not land on the branch (pull-off: the surfaces separate under a tensile
+   !> load, the released energy is unbounded).
+   subroutine load_jump_energies(model, params, branch, lpath, energy, status, errmsg)
+      use, intrinsic :: ieee_arithmetic, only: ieee_quiet_nan
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      type(path_type), intent(in) :: lpath
+      real(wp), intent(out) :: energy(:)
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(chain_type) :: ch
+      type(cover_type) :: cov
+      type(state_type) :: s1, s2
+      real(wp) :: pos1, pos2
+      integer :: k
+      logical :: ok1, ok2
+
+      status = wa_ok
+      energy = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (size(energy) < lpath%n) then
+         call set_error(wa_invalid_argument, "energy: needs one element per event of the "// &
+            "path", status, errmsg)
+         return
+      end if
+      call build_chain(model, params, branch, ch, status, errmsg)
+      if (status /= wa_ok) return
+      do k = 1, lpath%n - 1
+         if (lpath%event(k) /= event_jump_start .or. lpath%event(k + 1) /= event_jump_end) cycle
+         call locate(lpath%a_star(k), lpath%c_star(k), lpath%p_star(k), pos1, s1, ok1)
+         if (status /= wa_ok) return
+         call locate(lpath%a_star(k + 1), lpath%c_star(k + 1), lpath%p_star(k + 1), pos2, s2, ok2)
+         if (status /= wa_ok) return
+         if (.not. (ok1 .and. ok2) .or. pos1 == pos2) cycle
+         call build_cover(model, params, ch, [stretch_type(pos1, pos2)], n_gauss, 1, cov, &
+            status, errmsg)
+         if (status /= wa_ok) return
+         ! energy_lost gives -int P* dgbar* along the stretch
+         energy(k) = -energy_lost(cov, [stretch_type(pos1, pos2)]) - &
+            lpath%p_star(k)*(s2%gbar - s1%gbar)
+      end do
+   contains
+      !> The chain position of the state (a*, c*, P*) of the path, and the state there
+      !> with its gbar*: the interval whose interpolated c* and P* at the state's
+      !> parameter come nearest (ok = .false. if none is within 1e-6).
+      subroutine locate(a, c, p, pos, st, ok)
+         real(wp), intent(in) :: a, c, p
+         real(wp), intent(out) :: pos
+         type(state_type), intent(out) :: st
+         logical, intent(out) :: ok
+         type(state_type) :: guess
+         real(wp) :: x, t, d, d_best, x0, x1
+         integer :: i, kind
+         ok = .false.
+         pos = 0.0_wp
+         d_best = 1.0e-6_wp
+         guess%a_star = a; guess%c_star = c; guess%gap_width = c - a; guess%p_star = p
+         guess%zone_case = zone_inside
+         do i = 1, ch%n - 1
+            kind = param_kind(ch, i)
+            select case (kind)
+            case (0)
+               x = a
+            case (1)
+               x = c
+            case (3)
+               x = curve_variable(model, guess)
+            case default
+               cycle
+            end select
+            x0 = param(ch, i, 0.0_wp); x1 = param(ch, i, 1.0_wp)
+            if ((x - x0)*(x - x1) > 0.0_wp) cycle
+            t = 0.0_wp
+            if (x1 /= x0) t = (x - x0)/(x1 - x0)
+            d = abs(ch%c(i) + t*(ch%c(i + 1) - ch%c(i)) - c) + &
+               abs(ch%p(i) + t*(ch%p(i + 1) - ch%p(i)) - p)
+            if (d < d_best) then
+               d_best = d; pos = real(i - 1, wp) + t; ok = .true.
+            end if
+         end do
+         if (.not. ok) return
+         i = min(int(pos), ch%n - 2) + 1
+         t = pos - real(i - 1, wp)
+         if (t <= 0.0_wp) then
+            st = chain_state(ch, i)
+         else if (t >= 1.0_wp) then
+            st = chain_state(ch, i + 1)
+         else
+            call state_at_param(model, params, ch, i, param(ch, i, t), st, status, errmsg)
+         end if
+      end subroutine locate
+   end subroutine load_jump_energies
 
 end module wa_gappath

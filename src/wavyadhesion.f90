@@ -22,6 +22,7 @@ module wavyadhesion
    use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
       event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
       event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
+   use wa_loadpath, only: path_from_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
@@ -30,13 +31,14 @@ module wavyadhesion
       special_meaning, map_point_meet, map_point_turn, map_point_end, map_point_fail
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
-      gap_event_interaction_lost
+      gap_event_interaction_lost, load_jump_energies
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
       gap_critical_values, gap_critical_count, gap_critical_names
    implicit none
    private
 
    public :: wp
+   public :: load_jump_energies
    public :: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost
@@ -59,6 +61,7 @@ module wavyadhesion
    public :: branch_type, trace_options, trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, event_full_contact_left, &
       event_pull_off, event_branch_end, event_a_turn
+   public :: path_from_branch
    public :: path_type, load_path, critical_forces, critical_sweep, mechanism_change, &
       stage_loading, stage_unloading, mechanism_gradual, mechanism_jump_case1, &
       mechanism_jump_case2, mechanism_snap

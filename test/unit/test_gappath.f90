@@ -1,7 +1,8 @@
 !> Gap control (src/wa_gappath.f90): the identities of issue 11 and doc/theory.md
 !> "Gap control": Westergaard has no hysteresis (W* = 0) and its approach curve is
 !> gbar* = 1 - P* + P* ln P*; W* -> 0 as mu -> 0 for DW; W* >= 0; every jump starts
-!> where gbar* is extremal and keeps gbar*; the quadrature of W* is converged.
+!> where gbar* is extremal and keeps gbar*; the quadrature of W* is converged; every
+!> load-control jump that lands on the branch releases a finite energy >= 0.
 module test_gappath
    use wavyadhesion
    use wa_gappath, only: gap_path_from_branch
@@ -26,7 +27,8 @@ contains
          new_unittest("md_quadrature_converged", test_md_quadrature), &
          new_unittest("westergaard_gap_law", test_westergaard_law), &
          new_unittest("gap_law_loop_is_the_energy", test_law_energy), &
-         new_unittest("gap_law_bad_input", test_law_bad_input)]
+         new_unittest("gap_law_bad_input", test_law_bad_input), &
+         new_unittest("load_jump_energies", test_load_jump_energies)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -184,8 +186,8 @@ contains
       type(gap_path_type) :: p1, p2
       integer :: status, k
       real(wp), parameter :: cases(3, 5) = reshape([0.3_wp, 1.0_wp, 1.0e-11_wp, &
-         0.3_wp, 5.0_wp, 1.0e-11_wp, 1.0_wp, 1.0_wp, 1.0e-10_wp, 0.6_wp, 1.0_wp, 1.0e-11_wp, &
-         1.0_wp, 0.3_wp, 1.0e-9_wp], [3, 5])
+         0.3_wp, 5.0_wp, 1.0e-11_wp, 1.0_wp, 1.0_wp, 1.0e-11_wp, 0.6_wp, 1.0_wp, 1.0e-11_wp, &
+         1.0_wp, 0.3_wp, 1.0e-11_wp], [3, 5])
       do k = 1, size(cases, 2)
          call new_params(cases(1, k), cases(2, k), params, status)
          call trace_branch(model_md, params, b, status)
@@ -257,5 +259,40 @@ contains
       call check(error, status == wa_invalid_argument .and. index(msg, "gbar") > 0, &
          "negative gbar rejected")
    end subroutine test_law_bad_input
+
+   !> Load control: the energy released by each jump that lands on the branch is finite
+   !> and >= 0 (the potential E + P0 gbar* can only fall in a jump).
+   subroutine test_load_jump_energies(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: cases(2, 4) = reshape([0.3_wp, 1.0_wp, 0.3_wp, 5.0_wp, &
+         0.6_wp, 1.0_wp, 1.0_wp, 3.0_wp], [2, 4])
+      integer, parameter :: models(2) = [model_dw, model_md]
+      type(params_type) :: params
+      type(branch_type) :: b
+      type(path_type) :: lp
+      real(wp) :: energy(64)
+      integer :: status, k, m, i, n_jumps
+      n_jumps = 0
+      do m = 1, 2
+         do k = 1, size(cases, 2)
+            call new_params(cases(1, k), cases(2, k), params, status)
+            call trace_branch(models(m), params, b, status)
+            call path_from_branch(models(m), params, b, lp, status)
+            call check(error, status == wa_ok, "load path")
+            if (allocated(error)) return
+            call load_jump_energies(models(m), params, b, lp, energy, status)
+            call check(error, status == wa_ok, "load_jump_energies")
+            if (allocated(error)) return
+            do i = 1, lp%n - 1
+               if (lp%event(i) /= event_jump_start .or. lp%event(i + 1) /= event_jump_end) cycle
+               call check(error, energy(i) >= -1.0e-13_wp .and. energy(i) < 10.0_wp, &
+                  "jump energy finite and >= 0")
+               if (allocated(error)) return
+               n_jumps = n_jumps + 1
+            end do
+         end do
+      end do
+      call check(error, n_jumps >= 4, "the cases have jumps")
+   end subroutine test_load_jump_energies
 
 end module test_gappath
