@@ -453,13 +453,15 @@ end subroutine fa_trace_branch
 !> their mechanisms and the loop area: the first min(n_events, capacity) events; status 4
 !> when n_events > capacity. On other failures n_events = 0 and P_fc = P_pf = NaN.
 subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star, p_star, &
-      n_events, p_fc, p_pf, fc_mechanism, pf_mechanism, loop_area, status, message)
+      n_events, p_fc, p_pf, fc_mechanism, pf_mechanism, loop_area, jump_energy, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_params, only: params_type, new_params
    use wa_models, only: check_model
-   use wa_loadpath, only: path_type, load_path
+   use wa_loadpath, only: path_type, path_from_branch
+   use wa_branch, only: branch_type, trace_branch
+   use wa_gappath, only: load_jump_energies
    implicit none
    !> Length of the event arrays, >= 1
    integer(c_int), intent(in) :: capacity
@@ -491,6 +493,8 @@ subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star
    integer(c_int), intent(out) :: pf_mechanism
    !> Area of the P*-a* hysteresis loop
    real(c_double), intent(out) :: loop_area
+   !> Energy released by the jump starting at each event (NaN at other events)
+   real(c_double), intent(out) :: jump_energy(capacity)
    !> wa_ok or the failure's status
    integer(c_int), intent(out) :: status
    !> The failure's message
@@ -498,15 +502,21 @@ subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star
    !f2py threadsafe
    type(params_type) :: params
    type(path_type) :: path
+   type(branch_type) :: branch
+   real(c_double) :: energy(64)
    integer :: m, stat
 
    message = ""
    stage = 0; event = 0; a_star = 0.0_c_double; c_star = 0.0_c_double; p_star = 0.0_c_double
    n_events = 0; fc_mechanism = -1; pf_mechanism = -1
    p_fc = ieee_value(1.0_c_double, ieee_quiet_nan); p_pf = p_fc; loop_area = p_fc
+   jump_energy = p_fc
    call check_model(int(model), stat, message)
    if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
-   if (stat == wa_ok) call load_path(int(model), params, path, stat, message)
+   if (stat == wa_ok) call trace_branch(int(model), params, branch, stat, message)
+   if (stat == wa_ok) call path_from_branch(int(model), params, branch, path, stat, message)
+   if (stat == wa_ok) call load_jump_energies(int(model), params, branch, path, energy, stat, &
+      message)
    if (stat == wa_ok) then
       m = min(path%n, int(capacity))
       stage(1:m) = int(path%stage(1:m), c_int)
@@ -519,6 +529,7 @@ subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star
       fc_mechanism = int(path%fc_mechanism, c_int)
       pf_mechanism = int(path%pf_mechanism, c_int)
       loop_area = path%loop_area
+      jump_energy(1:m) = energy(1:m)
       if (path%n > capacity) then
          stat = wa_capacity_too_small
          message = "fa_load_path: capacity too small"

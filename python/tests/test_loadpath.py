@@ -140,3 +140,15 @@ def test_unknown_model():
         wa.critical_forces("dww", 0.3, 1.0)
     with pytest.raises(ValueError, match="model"):
         wa.load_path(3, 0.3, 1.0)
+
+
+@pytest.mark.parametrize("model,alpha,mu", [("dw", 0.3, 5.0), ("md", 0.3, 1.0), ("md", 1.0, 3.0)])
+def test_jump_energies_are_released(model, alpha, mu):
+    """Each load-control jump that lands on the branch releases a finite energy >= 0;
+    every other event carries NaN."""
+    path = wa.load_path(model, alpha, mu)
+    starts = (path.event == 3) & np.r_[path.event[1:] == 4, False]
+    assert starts.any()
+    assert np.all(np.isfinite(path.jump_energy[starts]))
+    assert np.all(path.jump_energy[starts] >= -1e-13)
+    assert np.all(np.isnan(path.jump_energy[~starts]))

@@ -645,8 +645,14 @@ class LoadPath:
         How full contact is reached and contact lost (:data:`MECHANISMS`: "gradual",
         "jump_case1", "jump_case2", "snap").
     loop_area : float
-        Area enclosed by the loading-unloading loop in the (a*, P*) plane (not an
-        energy; trapezoidal along the branch points, relative accuracy about 1e-4).
+        Area enclosed by the loading-unloading loop in the (a*, P*) plane: the paper's
+        measure of hysteresis, kept to reproduce its figures; not an energy
+        (trapezoidal along the branch points, relative accuracy about 1e-4).
+    jump_energy : numpy.ndarray of float
+        Energy released by the jump that starts at each event, in units p* Delta per
+        period: the drop of E + P0 gbar* at the jump load P0 (NaN at other events and for
+        a pull-off, which separates the surfaces). See :func:`gap_path` for the energy
+        lost per cycle under gap control.
     """
 
     model: str
@@ -662,6 +668,7 @@ class LoadPath:
     fc_mechanism: str
     pf_mechanism: str
     loop_area: float
+    jump_energy: np.ndarray
 
     def __len__(self) -> int:
         return int(self.event.size)
@@ -806,7 +813,8 @@ def load_path(model, alpha, mu) -> LoadPath:
     -------
     LoadPath
         Arrays ``stage, event, a_star, c_star, P_star`` (one element per event), the
-        floats ``P_fc, P_pf, loop_area``, the mechanism names ``fc_mechanism,
+        floats ``P_fc, P_pf, loop_area``, the array ``jump_energy`` (energy released
+        by the jump starting at each event), the mechanism names ``fc_mechanism,
         pf_mechanism`` (also ``mechanisms``) and the list ``events``.
 
     Raises
@@ -831,7 +839,7 @@ def load_path(model, alpha, mu) -> LoadPath:
     capacity = _PATH_CAPACITY
     while True:
         out = _f.fa_load_path(capacity, code, alpha, mu)
-        stage, ev, a, c, p, n, p_fc, p_pf, fc_m, pf_m, area, status, message = out
+        stage, ev, a, c, p, n, p_fc, p_pf, fc_m, pf_m, area, jump_e, status, message = out
         if status == _CAPACITY_TOO_SMALL and n > capacity:
             capacity = int(n)
             continue
@@ -841,7 +849,8 @@ def load_path(model, alpha, mu) -> LoadPath:
     n = int(n)
     return LoadPath(_model_name(code), alpha, mu, stage[:n].copy(), ev[:n].copy(),
                     a[:n].copy(), c[:n].copy(), p[:n].copy(), float(p_fc), float(p_pf),
-                    MECHANISMS[int(fc_m)], MECHANISMS[int(pf_m)], float(area))
+                    MECHANISMS[int(fc_m)], MECHANISMS[int(pf_m)], float(area),
+                    jump_e[:n].copy())
 
 
 def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
