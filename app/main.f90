@@ -287,7 +287,7 @@ contains
          format_real(path%p_pf), "energy released by each jump (units p* Delta per period):"]
       do i = 1, path%n
          if (path%event(i) == event_jump_start .and. energy(i) == energy(i)) &
-            notes = [character(len=80) :: notes, "  jump at event "//int_text(i)// &
+            notes = [character(len=80) :: notes, "  jump starting at event row "//int_text(i)// &
             ", P* = "//format_real(path%p_star(i))//": "//format_real(energy(i))]
       end do
       notes = [character(len=80) :: notes, "P-a loop area (the paper's measure, not an "// &

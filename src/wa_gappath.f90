@@ -18,7 +18,7 @@ module wa_gappath
    use wa_separation, only: state_mean_gap, md_no_contact_state
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
-      event_a_turn, event_jump_start, event_jump_end
+      event_a_turn, event_jump_start, event_jump_end, event_full_contact_reached
    use wa_loadpath, only: path_type
    implicit none
    private
@@ -1533,9 +1533,10 @@ contains
    !> potential E + P0 gbar* (E: the stored energy, elastic and adhesive, dE = -P* dgbar*
    !> along equilibria) is  int_1^2 (P* - P0) dgbar*  along the branch from 1 to 2 through
    !> the states in between (doc/theory.md, "Gap control"); units p* Delta, per period.
-   !> energy(k) is set at the jump-start events k; NaN at every other event and at a jump
-   !> that does not land on the branch (pull-off: the surfaces separate under a tensile
-   !> load, the released energy is unbounded).
+   !> energy(k) is set at the jump-start events k whose next event is the landing (a jump
+   !> end, or full contact reached); NaN at every other event, at a jump from separation
+   !> (a* = 0: the separated state is not on the branch) and at a pull-off (the surfaces
+   !> separate under a tensile load: the released energy is unbounded).
    subroutine load_jump_energies(model, params, branch, lpath, energy, status, errmsg)
       use, intrinsic :: ieee_arithmetic, only: ieee_quiet_nan
       integer, intent(in) :: model
@@ -1562,11 +1563,20 @@ contains
       call build_chain(model, params, branch, ch, status, errmsg)
       if (status /= wa_ok) return
       do k = 1, lpath%n - 1
-         if (lpath%event(k) /= event_jump_start .or. lpath%event(k + 1) /= event_jump_end) cycle
+         if (lpath%event(k) /= event_jump_start .or. .not. (lpath%event(k + 1) == &
+            event_jump_end .or. lpath%event(k + 1) == event_full_contact_reached)) cycle
+         if (lpath%a_star(k) <= 0.0_wp) cycle         ! from separation: off the branch
          call locate(lpath%a_star(k), lpath%c_star(k), lpath%p_star(k), pos1, s1, ok1)
          if (status /= wa_ok) return
-         call locate(lpath%a_star(k + 1), lpath%c_star(k + 1), lpath%p_star(k + 1), pos2, s2, ok2)
-         if (status /= wa_ok) return
+         if (lpath%event(k + 1) == event_full_contact_reached) then
+            ! full contact (gbar* = 0) at P0 above the chain's end: gbar* stays 0 from the
+            ! end (a* = 1/2) to the landing, so the integral stops at the end
+            pos2 = real(ch%n - 1, wp); s2 = chain_state(ch, ch%n); ok2 = .true.
+         else
+            call locate(lpath%a_star(k + 1), lpath%c_star(k + 1), lpath%p_star(k + 1), pos2, &
+               s2, ok2)
+            if (status /= wa_ok) return
+         end if
          if (.not. (ok1 .and. ok2) .or. pos1 == pos2) cycle
          call build_cover(model, params, ch, [stretch_type(pos1, pos2)], n_gauss, 1, cov, &
             status, errmsg)
@@ -1578,7 +1588,8 @@ contains
    contains
       !> The chain position of the state (a*, c*, P*) of the path, and the state there
       !> with its gbar*: the interval whose interpolated c* and P* at the state's
-      !> parameter come nearest (ok = .false. if none is within 1e-6).
+      !> parameter come nearest (ok = .false. if none is within 1e-2: the interpolation
+      !> only picks the interval; the state there is solved at the state's parameter).
       subroutine locate(a, c, p, pos, st, ok)
          real(wp), intent(in) :: a, c, p
          real(wp), intent(out) :: pos
@@ -1589,7 +1600,7 @@ contains
          integer :: i, kind
          ok = .false.
          pos = 0.0_wp
-         d_best = 1.0e-6_wp
+         d_best = 1.0e-2_wp
          guess%a_star = a; guess%c_star = c; guess%gap_width = c - a; guess%p_star = p
          guess%zone_case = zone_inside
          do i = 1, ch%n - 1

@@ -144,10 +144,11 @@ def test_unknown_model():
 
 @pytest.mark.parametrize("model,alpha,mu", [("dw", 0.3, 5.0), ("md", 0.3, 1.0), ("md", 1.0, 3.0)])
 def test_jump_energies_are_released(model, alpha, mu):
-    """Each load-control jump that lands on the branch releases a finite energy >= 0;
-    every other event carries NaN."""
+    """Each load-control jump from a contact state that lands on the branch (a jump end
+    or full contact) releases a finite energy >= 0; every other event carries NaN."""
     path = wa.load_path(model, alpha, mu)
-    starts = (path.event == 3) & np.r_[path.event[1:] == 4, False]
+    landing = np.r_[np.isin(path.event[1:], (4, 5)), False]
+    starts = (path.event == 3) & landing & (path.a_star > 0)
     assert starts.any()
     assert np.all(np.isfinite(path.jump_energy[starts]))
     assert np.all(path.jump_energy[starts] >= -1e-13)

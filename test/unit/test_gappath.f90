@@ -284,7 +284,9 @@ contains
             call check(error, status == wa_ok, "load_jump_energies")
             if (allocated(error)) return
             do i = 1, lp%n - 1
-               if (lp%event(i) /= event_jump_start .or. lp%event(i + 1) /= event_jump_end) cycle
+               if (lp%event(i) /= event_jump_start .or. lp%a_star(i) <= 0.0_wp) cycle
+               if (.not. (lp%event(i + 1) == event_jump_end .or. &
+                  lp%event(i + 1) == event_full_contact_reached)) cycle
                call check(error, energy(i) >= -1.0e-13_wp .and. energy(i) < 10.0_wp, &
                   "jump energy finite and >= 0")
                if (allocated(error)) return
