@@ -142,7 +142,7 @@ def test_unknown_model():
         wa.load_path(3, 0.3, 1.0)
 
 
-@pytest.mark.parametrize("model,alpha,mu", [("dw", 0.3, 5.0), ("md", 0.3, 1.0), ("md", 1.0, 3.0)])
+@pytest.mark.parametrize("model,alpha,mu", [("dw", 0.3, 5.0), ("md", 0.3, 1.0), ("md", 0.3, 5.0)])
 def test_jump_energies_are_released(model, alpha, mu):
     """Each load-control jump from a contact state that lands on the branch (a jump end
     or full contact) releases a finite energy >= 0; every other event carries NaN."""
