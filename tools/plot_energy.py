@@ -212,6 +212,17 @@ def main():
             print(f"{model} alpha {alpha:g}: max W*/(pi alpha^2/2) = {f[k]:.4f} at mu = {mus[k]:.3g};"
                   f" mu = 1: {np.interp(0.0, np.log(mus), f):.4f}; mu = 1e3: {f[-1]:.4f};"
                   f" failed: {int(np.isnan(f).sum())}")
+    # "smaller waviness induces more energy loss", in energy: the loss per unit area is
+    # W*/(pi alpha^2/2) * work of adhesion; at fixed materials and period a smaller amplitude
+    # raises alpha ~ 1/Delta and mu ~ Delta^(-1/3) ~ alpha^(1/3)
+    for mu0 in (0.3, 1.0, 3.0, 10.0, 1000.0):
+        for model in ("dw", "md"):
+            fixed = [wa.gap_law(model, a, mu0, [0.5]).W_fraction for a in ALPHAS]
+            line = [wa.gap_law(model, a, mu0 * (a / ALPHAS[0]) ** (1 / 3), [0.5]).W_fraction
+                    for a in ALPHAS]
+            print(f"{model} W*/(pi alpha^2/2) at alpha 0.3, 0.6, 1: mu = {mu0:g} fixed: "
+                  + ", ".join(f"{f:.4f}" for f in fixed)
+                  + f"; mu = {mu0:g} (alpha/0.3)^(1/3): " + ", ".join(f"{f:.4f}" for f in line))
     for model, mu, w, js in report:
         print(f"{model} alpha 0.3 mu {mu:g}: W* = {w:.6g}; jumps (stage, gbar*, P from -> to): "
               + "; ".join(f"{s} {g:.5g} {p0:.4g} -> {p1:.4g}" for s, g, p0, p1 in js))
