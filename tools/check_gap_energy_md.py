@@ -167,12 +167,26 @@ def root(f, g, lo, hi):
             return x
     except (ValueError, ZeroDivisionError):
         pass
+    # brackets [g - d (g - lo), g] and [g, g + d (hi - g)], d growing to 1: the narrower
+    # one with a sign change wins (near c* = 1/2 the root sits within 1e-8 of hi)
+    fg = f(g)
     d = mp.mpf("1e-9")
-    for _ in range(30):
-        x0, x1 = max(g - d * (g - lo), lo + (g - lo) * mp.mpf("1e-30")), g + d * (hi - g)
-        f0, f1 = f(x0), f(x1)
-        if isinstance(f0, mp.mpf) and isinstance(f1, mp.mpf) and f0 * f1 < 0:
-            return mp.findroot(f, (x0, x1), solver="anderson")
+    while d <= 1:
+        found = []
+        for x in (g - d * (g - lo), g + d * (hi - g)):
+            if lo < x <= hi:
+                fx = f(x)
+                if isinstance(fx, mp.mpf) and fx * fg <= 0:
+                    found.append((abs(x - g), x, fx))
+        if found:
+            _, x, fx = min(found)
+            r = mp.findroot(f, (min(x, g), max(x, g)), solver="anderson", verify=False)
+            # near c* = 1/2, 1/2 - c* ~ 1e-8 keeps only dps - 8 digits: the residual is
+            # judged against the bracket's values too (run at a larger --dps to check)
+            res = abs(f(r))
+            if lo < r <= hi and (res <= mp.mpf(10) ** (-mp.mp.dps + 6)
+                                 or res <= mp.mpf("1e-9") * max(abs(fg), abs(fx))):
+                return r
         d *= 4
     raise ValueError(f"no root bracketed near {g} in ({lo}, {hi})")
 
@@ -253,11 +267,12 @@ def build_chain(md, alpha, mu):
     # no-contact states: c from 0 to the first zero of the crest gap
     cs = [mp.mpf(k) / 2000 for k in range(1, 1000)]
     k = next(i for i, c in enumerate(cs) if md.h00(c) < 0)
-    c_close = mp.findroot(md.h00, (cs[k - 1], cs[k]), solver="anderson")
+    # + rounds the roots to the working precision (findroot returns extra bits)
+    c_close = +mp.findroot(md.h00, (cs[k - 1], cs[k]), solver="anderson")
     chain = [Piece("no-contact", mp.mpf(0), c_close,
                    lambda c: (-2 * md.s0 * c, md.gbar0(c)),
                    lambda c: (-2 * md.s0 * c, md.dgbar0(c)))]
-    a_sw = md.a_switch()
+    a_sw = +md.a_switch()
     chain += case1_pieces(md, lib_a, lib_c, c_close, a_sw)
     chain.append(Piece("case2", a_sw, mp.mpf(0.5),
                        lambda a: (mp.sin(mp.pi * a) ** 2 - md.s0, gw(mp.sin(mp.pi * a) ** 2)),
@@ -275,7 +290,10 @@ def stretches(piece, nsample=16):
     cuts = [t0]
     for i in range(nsample - 1):
         if mp.sign(ds[i]) != mp.sign(ds[i + 1]):
-            cuts.append(mp.findroot(lambda t: piece.dstate(t)[1], (ts[i], ts[i + 1]), solver="anderson"))
+            t = mp.findroot(lambda t: piece.dstate(t)[1], (ts[i], ts[i + 1]), solver="anderson",
+                            verify=False)
+            assert min(ts[i], ts[i + 1]) <= t <= max(ts[i], ts[i + 1]), "extremum outside its bracket"
+            cuts.append(t)
     cuts.append(t1)
     g = [end_gbar(piece, t) for t in cuts]
     return [(cuts[i], cuts[i + 1], g[i], g[i + 1]) for i in range(len(cuts) - 1)]
@@ -298,10 +316,24 @@ def integral(piece, ta, tb):
 
 def land(piece, ts, te, target):
     """tau in [ts, te] where gbar* = target."""
-    return mp.findroot(lambda t: piece.state(t)[1] - target, (ts, te), solver="anderson")
+    f = lambda t: piece.state(t)[1] - target
+    lo, hi = ts, te
+    flo = f(lo)
+    for _ in range(12):                                # bisection to 2^-12 of the stretch
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if fm * flo > 0:
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    t = mp.findroot(f, (lo, hi), solver="anderson", verify=False)
+    assert min(ts, te) <= t <= max(ts, te), "landing outside its stretch"
+    if abs(f(t)) > mp.mpf(10) ** (-mp.mp.dps + 5) * (1 + abs(target)):
+        raise ValueError(f"landing at gbar* = {target} on {piece.name}: residual {f(t)}")
+    return t
 
 
-def walk(md, chain, balance):
+def walk(md, chain, balance, verbose=False):
     """The approach and the retraction over the chain; returns the events, W* and, with
     balance, int P* dgbar* along the approach and along the retraction (at 12 digits)."""
     segs = []           # [piece, t_start, t_end, g_start, g_end]
@@ -311,6 +343,9 @@ def walk(md, chain, balance):
         for (ts, te, gs, ge) in stretches(piece):
             segs.append([piece, ts, te, prev_end if gs is None else gs, ge])
             prev_end = ge
+            if verbose:
+                print("   stretch", piece.name, mp.nstr(ts, 8), mp.nstr(te, 8),
+                      "gbar", mp.nstr(segs[-1][3], 12), "->", mp.nstr(ge, 12), flush=True)
     tol = mp.mpf(10) ** (-mp.mp.dps + 5)
     events, app, ret = [], {}, {}
     # approach: descending stretches, the part below the running minimum of gbar*
@@ -406,13 +441,10 @@ def main():
         alpha, mu = (float(x) for x in case.split(":"))
         md = MD(alpha, mu)
         chain, c_close, a_sw, branch = build_chain(md, alpha, mu)
-        events, w, i_app, i_ret, segs = walk(md, chain, opts.balance)
+        events, w, i_app, i_ret, segs = walk(md, chain, opts.balance, opts.verbose)
         lib = wa.gap_law("md", alpha, mu, [0.5])
         rel = abs(lib.W_star - w) / w
         if opts.verbose:
-            for s in segs:
-                print("   stretch", s[0].name, mp.nstr(s[1], 8), mp.nstr(s[2], 8),
-                      "gbar", mp.nstr(s[3], 12), "->", mp.nstr(s[4], 12))
             for e in events:
                 print("   ", e[0], e[1], "gbar =", mp.nstr(e[2], 14), "P =", mp.nstr(e[3], 10))
         print(f"md alpha {alpha:g} mu {mu:g}: W* (mpmath) = {mp.nstr(w, 18)}  library = "

@@ -223,6 +223,8 @@ def main():
             print(f"{model} W*/(pi alpha^2/2) at alpha 0.3, 0.6, 1: mu = {mu0:g} fixed: "
                   + ", ".join(f"{f:.4f}" for f in fixed)
                   + f"; mu = {mu0:g} (alpha/0.3)^(1/3): " + ", ".join(f"{f:.4f}" for f in line))
+    print("jkr W*/(pi alpha^2/2) at alpha 0.3, 0.6, 1, 3, 10, 30: " + ", ".join(
+        f"{wa.gap_law('jkr', a, 1.0, [0.5]).W_fraction:.4f}" for a in (0.3, 0.6, 1, 3, 10, 30)))
     for model, mu, w, js in report:
         print(f"{model} alpha 0.3 mu {mu:g}: W* = {w:.6g}; jumps (stage, gbar*, P from -> to): "
               + "; ".join(f"{s} {g:.5g} {p0:.4g} -> {p1:.4g}" for s, g, p0, p1 in js))
