@@ -159,7 +159,7 @@ contains
       if (present(nodes)) n_nodes = max(2, min(nodes, 64))
       if (present(splits)) n_splits = max(1, min(splits, 64))
       call build_cover(model, params, ch, walked(1:n_walked), n_nodes, n_splits, cov, status, &
-         errmsg)
+         errmsg, net_only=.true.)
       if (status /= wa_ok) return
       path%w_star = energy_lost(cov, walked(1:n_walked))
       if (path%w_star < 0.0_wp) then                 ! rounding only: the terms are O(1)
@@ -683,8 +683,12 @@ contains
 
    !> Cover the walked stretches of the chain with pieces and panels (n_nodes per panel,
    !> every piece first split into n_splits panels).
-   subroutine build_cover(model, params, ch, walked, n_nodes, n_splits, cov, status, errmsg)
+   !> net_only: only the pieces walked a net number of times (what W* needs; the gap law
+   !> needs every walked piece).
+   subroutine build_cover(model, params, ch, walked, n_nodes, n_splits, cov, status, errmsg, &
+         net_only)
       integer, intent(in) :: model, n_nodes, n_splits
+      logical, intent(in), optional :: net_only
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
       type(stretch_type), intent(in) :: walked(:)
@@ -723,6 +727,11 @@ contains
          if (hi <= lo) cycle
          if (.not. any([(min(walked(k)%s1, walked(k)%s2) <= lo .and. &
             max(walked(k)%s1, walked(k)%s2) >= hi, k=1, size(walked))])) cycle
+         if (present(net_only)) then                ! W* only: skip what cancels
+            if (net_only .and. sum([(merge(sign(1.0_wp, walked(k)%s2 - walked(k)%s1), &
+               0.0_wp, min(walked(k)%s1, walked(k)%s2) <= lo .and. &
+               max(walked(k)%s1, walked(k)%s2) >= hi), k=1, size(walked))]) == 0.0_wp) cycle
+         end if
          cov%n_pieces = cov%n_pieces + 1
          p = cov%n_pieces
          cov%s0(p) = lo; cov%s1(p) = hi
