@@ -286,8 +286,14 @@ def build_chain(md, alpha, mu):
 def stretches(piece, nsample=16):
     """Split a piece into gbar*-monotone stretches: [(t_start, t_end, g_start, g_end)]."""
     t0, t1 = piece.t0, piece.t1
-    # sample dgbar/dtau on Chebyshev points of the open interval
-    ts = [t0 + (t1 - t0) * (1 - mp.cos(mp.pi * (k + mp.mpf(0.5)) / nsample)) / 2 for k in range(nsample)]
+    # sample dgbar/dtau on Chebyshev points of the open interval and next to both ends (an
+    # extremum between an end and the first Chebyshev point is otherwise missed: alpha = 10)
+    eps = mp.mpf("1e-6")
+    ts = ([t0 + (t1 - t0) * eps]
+          + [t0 + (t1 - t0) * (1 - mp.cos(mp.pi * (k + mp.mpf(0.5)) / nsample)) / 2
+             for k in range(nsample)]
+          + [t1 - (t1 - t0) * eps])
+    nsample = len(ts)
     ds = [piece.dstate(t)[1] for t in ts]
     cuts = [t0]
     for i in range(nsample - 1):
