@@ -817,6 +817,68 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    status = int(stat, c_int)
 end subroutine fa_gap_law
 
+!> The events of one approach-retraction cycle under gap control (wa_gappath::gap_path)
+!> and the energy lost per cycle. capacity too small: status wa_capacity_too_small with
+!> n_events the number needed.
+subroutine fa_gap_path(capacity, model, alpha, mu, stage, event, zone_case, a_star, c_star, &
+      p_star, gbar, n_events, w_star, w_fraction, g_touch, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_models, only: check_model
+   use wa_gappath, only: gap_path_type, gap_path
+   implicit none
+   !> Length of the event arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, >= 0
+   real(c_double), intent(in) :: mu
+   !> Stage (1 approach, 2 retraction), event code and zone case of each event
+   integer(c_int), intent(out) :: stage(capacity), event(capacity), zone_case(capacity)
+   !> The state at each event
+   real(c_double), intent(out) :: a_star(capacity), c_star(capacity), p_star(capacity), &
+      gbar(capacity)
+   !> Number of events (may exceed capacity)
+   integer(c_int), intent(out) :: n_events
+   !> Energy lost per cycle, its fraction of the work of adhesion, gbar* of first interaction
+   real(c_double), intent(out) :: w_star, w_fraction, g_touch
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(gap_path_type) :: path
+   integer :: m, stat
+
+   message = ""
+   stage = 0; event = 0; zone_case = 0; n_events = 0
+   w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star; g_touch = w_star
+   a_star = w_star; c_star = w_star; p_star = w_star; gbar = w_star
+   call check_model(int(model), stat, message)
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call gap_path(int(model), params, path, stat, message)
+   if (stat == wa_ok) then
+      m = min(path%n, int(capacity))
+      stage(1:m) = int(path%stage(1:m), c_int)
+      event(1:m) = int(path%event(1:m), c_int)
+      zone_case(1:m) = int(path%zone_case(1:m), c_int)
+      a_star(1:m) = path%a_star(1:m); c_star(1:m) = path%c_star(1:m)
+      p_star(1:m) = path%p_star(1:m); gbar(1:m) = path%gbar(1:m)
+      n_events = int(path%n, c_int)
+      w_star = path%w_star; w_fraction = path%w_fraction; g_touch = path%g_touch
+      if (path%n > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_gap_path: capacity too small"
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_gap_path
+
 !> Critical values under gap control for one alpha over n values of mu, in one call of
 !> wa_gapcritical::gap_critical_sweep: values(:, i) in the order of gap_critical_names.
 !> Model and alpha are checked first, then every mu: the first invalid mu is reported

@@ -105,6 +105,21 @@ MECHANISMS = ("gradual", "jump_case1", "jump_case2", "snap")
 #: Load-path stages by code.
 STAGES = {1: "loading", 2: "unloading"}
 
+#: Gap-control event codes (3-6 as in EVENTS; WA_GAP_EVENT_* in C).
+GAP_EVENTS = {
+    3: "jump_start",
+    4: "jump_end",
+    5: "full_contact_reached",
+    6: "full_contact_left",
+    10: "touch",
+    11: "contact_made",
+    12: "contact_lost",
+    13: "interaction_lost",
+}
+
+#: Gap-control stages by code.
+GAP_STAGES = {1: "approach", 2: "retraction"}
+
 
 class WavyAdhesionError(Exception):
     """Base class of every error raised by wavyadhesion.
@@ -1354,3 +1369,79 @@ def gap_law(model, alpha, mu, gbar) -> GapLaw:
         _raise(status, message)
     return GapLaw(g.copy(), pa.reshape(shape), pr.reshape(shape), da.reshape(shape),
                   dr.reshape(shape), float(w), float(wf))
+
+
+class GapPath(NamedTuple):
+    """One approach-retraction cycle under gap (mean-gap) control, as :func:`gap_path`
+    returns it: one element per event (doc/user-guide.md, "Gap control")."""
+    #: 1 approach, 2 retraction (:data:`GAP_STAGES`)
+    stage: np.ndarray
+    #: Event codes (:data:`GAP_EVENTS`)
+    event: np.ndarray
+    #: Zone case of the state at each event (0 where the surfaces are apart or MD has no
+    #: contact)
+    zone_case: np.ndarray
+    a_star: np.ndarray
+    c_star: np.ndarray
+    P_star: np.ndarray
+    gbar: np.ndarray
+    #: Energy lost per cycle W* = -oint P* dgbar* (units p* Delta per unit area)
+    W_star: float
+    #: W*/(pi alpha^2/2)
+    W_fraction: float
+    #: gbar* where the surfaces first interact on approach
+    g_touch: float
+
+    @property
+    def events(self):
+        """The events as (stage name, event name, gbar*, P*) tuples."""
+        return [(GAP_STAGES[int(s)], GAP_EVENTS.get(int(e), str(int(e))), float(g), float(p))
+                for s, e, g, p in zip(self.stage, self.event, self.gbar, self.P_star)]
+
+
+def gap_path(model, alpha, mu) -> GapPath:
+    """Approach from far apart to full contact and retraction under gap control, with
+    the energy lost per cycle: the events (first interaction, jumps at constant gbar*,
+    contact made or lost, full contact reached or left, interaction lost) with their
+    states.
+
+    Parameters
+    ----------
+    model : {"westergaard", "jkr", "dw", "md"}
+        The contact model.
+    alpha, mu : float
+        Johnson's parameter (> 0) and the transition parameter (>= 0).
+
+    Returns
+    -------
+    GapPath
+
+    Raises
+    ------
+    InvalidArgumentError
+        Unknown model, or alpha or mu outside its range.
+    ConvergenceError
+        The continuation or a point solve failed.
+
+    Examples
+    --------
+    >>> path = gap_path("md", 0.3, 1.0)
+    >>> path.events[0][:2], round(path.W_star, 10)
+    (('approach', 'touch'), 0.0070144396)
+    """
+    code = _model_code(model)
+    alpha = _scalar(alpha, "alpha")
+    mu = _scalar(mu, "mu")
+    capacity = _PATH_CAPACITY
+    while True:
+        out = _f.fa_gap_path(capacity, code, alpha, mu)
+        stage, ev, zone, a, c, p, g, n, w, wf, gt, status, message = out
+        if status == _CAPACITY_TOO_SMALL and n > capacity:
+            capacity = int(n)
+            continue
+        break
+    if status != _OK:
+        _raise(status, message)
+    n = int(n)
+    return GapPath(stage[:n].copy(), ev[:n].copy(), zone[:n].copy(), a[:n].copy(),
+                   c[:n].copy(), p[:n].copy(), g[:n].copy(), float(w), float(wf), float(gt))
