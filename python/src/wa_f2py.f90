@@ -772,7 +772,7 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    use wa_status, only: wa_ok
    use wa_params, only: params_type, new_params
    use wa_models, only: check_model
-   use wa_gappath, only: gap_path_type, gap_path, gap_law
+   use wa_gappath, only: gap_law
    implicit none
    !> Number of mean gaps, >= 1
    integer(c_int), intent(in) :: n
@@ -796,7 +796,7 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    character(len=256), intent(out) :: message
    !f2py threadsafe
    type(params_type) :: params
-   type(gap_path_type) :: path
+   real(c_double) :: w, wf
    integer :: stat
 
    message = ""
@@ -805,11 +805,10 @@ subroutine fa_gap_law(n, model, alpha, mu, gbar, p_approach, p_retract, dpdg_app
    call check_model(int(model), stat, message)
    if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
    if (stat == wa_ok) call gap_law(int(model), params, gbar, p_approach, p_retract, &
-      dpdg_approach, dpdg_retract, stat, message)
-   if (stat == wa_ok) call gap_path(int(model), params, path, stat, message)
+      dpdg_approach, dpdg_retract, stat, message, w_star=w, w_fraction=wf)
    if (stat == wa_ok) then
-      w_star = path%w_star
-      w_fraction = path%w_fraction
+      w_star = w
+      w_fraction = wf
    else
       w_star = ieee_value(1.0_c_double, ieee_quiet_nan); w_fraction = w_star
       p_approach = w_star; p_retract = w_star; dpdg_approach = w_star; dpdg_retract = w_star
