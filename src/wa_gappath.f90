@@ -161,16 +161,7 @@ contains
       call build_cover(model, params, ch, walked(1:n_walked), n_nodes, n_splits, cov, status, &
          errmsg, net_only=.true.)
       if (status /= wa_ok) return
-      path%w_star = energy_lost(cov, walked(1:n_walked))
-      if (path%w_star < 0.0_wp) then                 ! rounding only: the terms are O(1)
-         if (path%w_star < -1.0e-14_wp) then
-            call set_error(wa_numerical_error, "gap_path: negative energy lost per cycle "// &
-               "(the walk or the quadrature failed)", status, errmsg)
-            return
-         end if
-         path%w_star = 0.0_wp
-      end if
-      path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
+      call cycle_energy(params, cov, walked(1:n_walked), path, status, errmsg)
    end subroutine gap_path_from_branch
 
    !> The gap law: P* on approach and on retraction at each mean gap gbar(k) >= 0, and
@@ -222,15 +213,10 @@ contains
       if (status /= wa_ok) return
       if (present(w_star) .or. present(w_fraction)) then
          ! the pieces walked both ways add m = 0: the sum is gap_path's
-         path%w_star = energy_lost(cov, walked(1:n_walked))
-         if (path%w_star < -1.0e-14_wp) then
-            call set_error(wa_numerical_error, "gap_law: negative energy lost per cycle "// &
-               "(the walk or the quadrature failed)", status, errmsg)
-            return
-         end if
-         path%w_star = max(path%w_star, 0.0_wp)          ! rounding only
+         call cycle_energy(params, cov, walked(1:n_walked), path, status, errmsg)
+         if (status /= wa_ok) return
          if (present(w_star)) w_star = path%w_star
-         if (present(w_fraction)) w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
+         if (present(w_fraction)) w_fraction = path%w_fraction
       end if
       do k = 1, size(gbar)
          if (gbar(k) == 0.0_wp) then               ! full contact: P* ~ P_end - sqrt(2 g)
@@ -1029,6 +1015,26 @@ contains
    end function piece_gbar
 
    ! ---------------------------------------------------------------- energy
+
+   !> path%w_star and path%w_fraction from the cover of the walked stretches; a negative
+   !> W* beyond rounding (the terms are O(1)) means the walk or the quadrature failed.
+   pure subroutine cycle_energy(params, cov, walked, path, status, errmsg)
+      type(params_type), intent(in) :: params
+      type(cover_type), intent(in) :: cov
+      type(stretch_type), intent(in) :: walked(:)
+      type(gap_path_type), intent(inout) :: path
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      status = wa_ok
+      path%w_star = energy_lost(cov, walked)
+      if (path%w_star < -1.0e-14_wp) then
+         call set_error(wa_numerical_error, "gap control: negative energy lost per cycle "// &
+            "(the walk or the quadrature failed)", status, errmsg)
+         return
+      end if
+      path%w_star = max(path%w_star, 0.0_wp)
+      path%w_fraction = path%w_star/(pi*params%alpha**2/2.0_wp)
+   end subroutine cycle_energy
 
    !> W* = -sum over walked stretches of int P* dgbar*: the net number of traversals
    !> of each piece of the cover times its integral (stretches walked both ways cancel

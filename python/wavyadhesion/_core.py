@@ -475,6 +475,21 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
                        _shaped(g, shape))
 
 
+def _grown(fortran, capacity, n_index, *args):
+    """Call an f2py routine whose first argument is the capacity of its output arrays,
+    growing the capacity until the outputs fit (out[n_index] is the count needed);
+    raise on failure (status and message are the last two outputs)."""
+    while True:
+        out = fortran(capacity, *args)
+        status, n = out[-2], out[n_index]
+        if status == _CAPACITY_TOO_SMALL and n > capacity:
+            capacity = int(n)
+            continue
+        if status != _OK:
+            _raise(status, out[-1])
+        return out
+
+
 def roots(model, alpha, mu, a_star) -> list:
     """Every equilibrium state at one point (alpha, mu, a*).
 
@@ -510,15 +525,7 @@ def roots(model, alpha, mu, a_star) -> list:
             raise InvalidArgumentError(f"{name} must be a scalar (roots works at one point)", 1)
         values.append(float(arr))
     alpha, mu, a_star = values
-    capacity = _ROOTS_CAPACITY
-    while True:
-        c, p, z, gap, g, n, status, message = _f.fa_roots(capacity, code, alpha, mu, a_star)
-        if status == _CAPACITY_TOO_SMALL and n > capacity:
-            capacity = int(n)
-            continue
-        break
-    if status != _OK:
-        _raise(status, message)
+    c, p, z, gap, g, n, _, _ = _grown(_f.fa_roots, _ROOTS_CAPACITY, 5, code, alpha, mu, a_star)
     return [
         State(a_star, float(c[k]), float(p[k]), int(z[k]), float(gap[k]), float(g[k]))
         for k in range(n)
@@ -791,16 +798,8 @@ def trace_branch(model, alpha, mu) -> Branch:
     code = _model_code(model)
     alpha = _scalar(alpha, "alpha")
     mu = _scalar(mu, "mu")
-    capacity = _BRANCH_CAPACITY
-    while True:
-        out = _f.fa_trace_branch(capacity, code, alpha, mu)
-        a, c, p, b, z, st, ev, ex, g, n, status, message = out
-        if status == _CAPACITY_TOO_SMALL and n > capacity:
-            capacity = int(n)
-            continue
-        break
-    if status != _OK:
-        _raise(status, message)
+    out = _grown(_f.fa_trace_branch, _BRANCH_CAPACITY, 9, code, alpha, mu)
+    a, c, p, b, z, st, ev, ex, g, n, _, _ = out
     n = int(n)
     return Branch(_model_name(code), alpha, mu, a[:n].copy(), c[:n].copy(), p[:n].copy(),
                   b[:n].copy(), z[:n].copy(), st[:n].astype(bool), ev[:n].copy(),
@@ -851,16 +850,8 @@ def load_path(model, alpha, mu) -> LoadPath:
     code = _model_code(model)
     alpha = _scalar(alpha, "alpha")
     mu = _scalar(mu, "mu")
-    capacity = _PATH_CAPACITY
-    while True:
-        out = _f.fa_load_path(capacity, code, alpha, mu)
-        stage, ev, a, c, p, n, p_fc, p_pf, fc_m, pf_m, area, jump_e, status, message = out
-        if status == _CAPACITY_TOO_SMALL and n > capacity:
-            capacity = int(n)
-            continue
-        break
-    if status != _OK:
-        _raise(status, message)
+    out = _grown(_f.fa_load_path, _PATH_CAPACITY, 5, code, alpha, mu)
+    stage, ev, a, c, p, n, p_fc, p_pf, fc_m, pf_m, area, jump_e, _, _ = out
     n = int(n)
     return LoadPath(_model_name(code), alpha, mu, stage[:n].copy(), ev[:n].copy(),
                     a[:n].copy(), c[:n].copy(), p[:n].copy(), float(p_fc), float(p_pf),
@@ -1432,16 +1423,8 @@ def gap_path(model, alpha, mu) -> GapPath:
     code = _model_code(model)
     alpha = _scalar(alpha, "alpha")
     mu = _scalar(mu, "mu")
-    capacity = _PATH_CAPACITY
-    while True:
-        out = _f.fa_gap_path(capacity, code, alpha, mu)
-        stage, ev, zone, a, c, p, g, n, w, wf, gt, status, message = out
-        if status == _CAPACITY_TOO_SMALL and n > capacity:
-            capacity = int(n)
-            continue
-        break
-    if status != _OK:
-        _raise(status, message)
+    out = _grown(_f.fa_gap_path, _PATH_CAPACITY, 7, code, alpha, mu)
+    stage, ev, zone, a, c, p, g, n, w, wf, gt, _, _ = out
     n = int(n)
     return GapPath(stage[:n].copy(), ev[:n].copy(), zone[:n].copy(), a[:n].copy(),
                    c[:n].copy(), p[:n].copy(), g[:n].copy(), float(w), float(wf), float(gt))
