@@ -15,8 +15,9 @@ module wa_gappath
    use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
       zone_full_contact, model_md, model_dw
    use wa_models, only: model_roots, max_model_roots
-   use wa_separation, only: state_mean_gap, md_no_contact_state
-   use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight
+   use wa_separation, only: state_mean_gap, md_no_contact_state, dw_state_gbar, md_state_gbar
+   use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight, &
+      curve_case2_load
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
       event_a_turn, event_jump_start, event_jump_end, event_full_contact_reached
    use wa_loadpath, only: path_type
@@ -70,6 +71,15 @@ module wa_gappath
       logical :: joined = .false.
    end type chain_type
 
+   !> The last case-1 solutions along a run of nodes (a panel's, in order): they predict
+   !> the next curve variable y by extrapolation, so its bracket can be tight.
+   type :: y_hint_type
+      integer :: n = 0
+      real(wp) :: x(3) = 0.0_wp, y(3) = 0.0_wp
+      !> sign of dF/dy at the last one
+      real(wp) :: slope = 1.0_wp
+   end type y_hint_type
+
    !> One walked stretch of the chain
    type :: stretch_type
       real(wp) :: s1 = 0.0_wp, s2 = 0.0_wp
@@ -81,6 +91,8 @@ module wa_gappath
    type :: rule_type
       integer :: n = 0
       real(wp), allocatable :: x(:), w(:), bw(:), d(:, :)
+      !> Legendre coefficients of the interpolant from the values at the nodes: c = leg f
+      real(wp), allocatable :: leg(:, :)
    end type rule_type
 
    !> The chain under the walked stretches cut into pieces (between consecutive walked
@@ -109,6 +121,8 @@ module wa_gappath
    real(wp), parameter :: tol_value = 1.0e-14_wp
    !> Bisections of a piece, at most
    integer, parameter :: max_depth = 48
+   !> Chain intervals per first panel of a piece
+   real(wp), parameter :: chain_per_panel = 16.0_wp
    !> Panels of one cover, at most (a bound on the work: typical covers need 10-60)
    integer, parameter :: max_panels = 4000
    !> The variable u of a piece: the chain parameter x (var_x); ln x where the piece
@@ -701,7 +715,7 @@ contains
       real(wp), allocatable :: cuts(:)
       real(wp) :: lo, hi, x_lo, x_hi, u_lo, u_hi, du, ua, ub, ic
       real(wp) :: pc(n_nodes), gc(n_nodes)
-      integer :: k, j, n_cuts, kind, p
+      integer :: k, j, n_cuts, kind, p, n_first, node
       logical :: found, near_zero
       real(wp) :: d
 
@@ -777,15 +791,30 @@ contains
             u_lo = log(x_lo); u_hi = log(x_hi)
          end if
          cov%u_start(p) = u_lo; cov%u_end(p) = u_hi
-         du = (u_hi - u_lo)/real(n_splits, wp)
-         do k = 1, n_splits
-            ua = u_lo + du*real(k - 1, wp)
-            ub = u_lo + du*real(k, wp)
-            if (k == n_splits) ub = u_hi
+         ! first panels: n_splits equal ones in u, or (default) one per chain_per_panel
+         ! chain intervals, cut at chain nodes: the tracer's steps follow the curvature,
+         ! so few of these panels are bisected again (each bisection wastes a panel)
+         n_first = n_splits
+         if (n_splits == 1) n_first = max(1, nint((hi - lo)/chain_per_panel))
+         du = (u_hi - u_lo)/real(n_first, wp)
+         ua = u_lo
+         do k = 1, n_first
+            if (k == n_first) then
+               ub = u_hi
+            else if (n_splits > 1) then
+               ub = u_lo + du*real(k, wp)
+            else
+               node = nint(lo + (hi - lo)*real(k, wp)/real(n_first, wp))
+               if (node <= lo .or. node >= hi) cycle
+               ub = u_of(cov, p, param(ch, node + 1, 0.0_wp))
+               if (.not. ((ub - ua)*(u_hi - u_lo) > 0.0_wp .and. (u_hi - ub)*(u_hi - u_lo) &
+                  > 0.0_wp)) cycle                       ! not strictly inside: merge
+            end if
             call eval_panel(model, params, ch, cov, p, ua, ub, pc, gc, ic, status, errmsg)
             if (status /= wa_ok) return
             call adapt(model, params, ch, cov, p, ua, ub, pc, gc, ic, 0, status, errmsg)
             if (status /= wa_ok) return
+            ua = ub
          end do
          cov%last(p) = cov%n_panels
          cov%integral(p) = sum(cov%pint(cov%first(p):cov%last(p)))
@@ -857,16 +886,8 @@ contains
    pure logical function resolved(rule, f, tol_abs)
       type(rule_type), intent(in) :: rule
       real(wp), intent(in) :: f(:), tol_abs
-      real(wp) :: c(rule%n), p0(rule%n), p1(rule%n), p2(rule%n), tail
-      integer :: k
-      p0 = 1.0_wp; p1 = rule%x
-      c(1) = 0.5_wp*sum(rule%w*f)
-      c(2) = 1.5_wp*sum(rule%w*f*p1)
-      do k = 2, rule%n - 1                           ! P_k by the three-term recurrence
-         p2 = (real(2*k - 1, wp)*rule%x*p1 - real(k - 1, wp)*p0)/real(k, wp)
-         c(k + 1) = 0.5_wp*real(2*k + 1, wp)*sum(rule%w*f*p2)
-         p0 = p1; p1 = p2
-      end do
+      real(wp) :: c(rule%n), tail
+      c = matmul(rule%leg, f)
       tail = maxval(abs(c(rule%n - 2:rule%n)))
       resolved = tail <= max(tol_value*maxval(abs(c)) + 16.0_wp*epsilon(1.0_wp)*maxval(abs(f)), &
          tol_abs)
@@ -884,6 +905,7 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: s
+      type(y_hint_type) :: hint
       real(wp) :: u, x
       integer :: j, i
       status = wa_ok
@@ -892,7 +914,7 @@ contains
          u = 0.5_wp*(ua + ub) + 0.5_wp*(ub - ua)*cov%rule%x(j)
          x = x_of(cov, p, u)
          i = interval_of(ch, cov%i_lo(p), cov%i_hi(p), x)
-         call state_at_param(model, params, ch, i, x, s, status, errmsg)
+         call state_at_param(model, params, ch, i, x, s, status, errmsg, hint)
          if (status /= wa_ok) return
          pv(j) = s%p_star; gv(j) = s%gbar
       end do
@@ -952,17 +974,48 @@ contains
       end select
    end function x_of
 
+   !> The variable u of piece p at parameter x (the inverse of x_of).
+   pure real(wp) function u_of(cov, p, x) result(u)
+      type(cover_type), intent(in) :: cov
+      integer, intent(in) :: p
+      real(wp), intent(in) :: x
+      select case (cov%var(p))
+      case (var_log)
+         u = log(x)
+      case (var_root)
+         u = sqrt(abs(x - cov%anchor(p)))
+      case (var_log_distance)
+         u = log(abs(x - cov%anchor(p)))
+      case (var_logit)
+         u = log(x/(cov%anchor(p) - x))
+      case default
+         u = x
+      end select
+   end function u_of
+
    !> The chain interval among i_lo..i_hi whose parameter range holds x (the nearest
    !> end interval when x is outside by rounding).
    pure integer function interval_of(ch, i_lo, i_hi, x) result(i)
       type(chain_type), intent(in) :: ch
       integer, intent(in) :: i_lo, i_hi
       real(wp), intent(in) :: x
-      real(wp) :: x0, x1
-      do i = i_lo, i_hi
-         x0 = param(ch, i, 0.0_wp); x1 = param(ch, i, 1.0_wp)
-         if ((x - x0)*(x - x1) <= 0.0_wp) return
+      real(wp) :: x0, x1, d
+      integer :: lo, hi, mid
+      ! the parameter is monotone over a piece's intervals: the first interval whose far
+      ! end is not before x, by bisection
+      d = sign(1.0_wp, param(ch, i_hi, 1.0_wp) - param(ch, i_lo, 0.0_wp))
+      lo = i_lo; hi = i_hi
+      do while (lo < hi)
+         mid = (lo + hi)/2
+         if (d*(param(ch, mid, 1.0_wp) - x) >= 0.0_wp) then
+            hi = mid
+         else
+            lo = mid + 1
+         end if
       end do
+      i = lo
+      x0 = param(ch, i, 0.0_wp); x1 = param(ch, i, 1.0_wp)
+      if ((x - x0)*(x - x1) <= 0.0_wp) return
       x0 = param(ch, i_lo, 0.0_wp)
       x1 = param(ch, i_hi, 1.0_wp)
       i = merge(i_lo, i_hi, abs(x - x0) <= abs(x - x1))
@@ -1114,9 +1167,18 @@ contains
       integer, intent(in) :: n
       type(rule_type), intent(out) :: rule
       integer :: j, l
+      real(wp) :: p0(n), p1(n), p2(n)
       rule%n = n
-      allocate (rule%x(n), rule%w(n), rule%bw(n), rule%d(n, n))
+      allocate (rule%x(n), rule%w(n), rule%bw(n), rule%d(n, n), rule%leg(n, n))
       call gauss_legendre(rule%x, rule%w)
+      p0 = 1.0_wp; p1 = rule%x                    ! P_k(x_j) by the three-term recurrence
+      rule%leg(1, :) = 0.5_wp*rule%w
+      if (n > 1) rule%leg(2, :) = 1.5_wp*rule%w*p1
+      do l = 2, n - 1
+         p2 = (real(2*l - 1, wp)*rule%x*p1 - real(l - 1, wp)*p0)/real(l, wp)
+         rule%leg(l + 1, :) = 0.5_wp*real(2*l + 1, wp)*rule%w*p2
+         p0 = p1; p1 = p2
+      end do
       do j = 1, n
          rule%bw(j) = 1.0_wp
          do l = 1, n
@@ -1291,7 +1353,7 @@ contains
    end function chain_state
 
    !> The state of chain interval i at parameter x (with its gbar*).
-   subroutine state_at_param(model, params, ch, i, x, s, status, errmsg)
+   subroutine state_at_param(model, params, ch, i, x, s, status, errmsg, hint)
       integer, intent(in) :: model, i
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
@@ -1299,9 +1361,12 @@ contains
       type(state_type), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      !> the previous solutions of a run of nodes (updated)
+      type(y_hint_type), intent(inout), optional :: hint
       real(wp) :: t, c_guess
       integer :: zone
       logical :: done
+      if (param_kind(ch, i) /= 0 .and. present(hint)) hint%n = 0
       if (param_kind(ch, i) == 1) then
          call md_no_contact_state(params, min(x, 0.5_wp - epsilon(x)), s, status, errmsg)
          return
@@ -1315,7 +1380,7 @@ contains
       end if
       t = 0.5_wp
       if (ch%a(i + 1) /= ch%a(i)) t = (x - ch%a(i))/(ch%a(i + 1) - ch%a(i))
-      call local_state(model, params, ch, i, x, t, s, done, status, errmsg)
+      call local_state(model, params, ch, i, x, t, s, done, status, errmsg, hint)
       if (done .or. status /= wa_ok) return
       c_guess = ch%c(i) + t*(ch%c(i + 1) - ch%c(i))
       zone = ch%zone(i + 1)
@@ -1334,9 +1399,8 @@ contains
    !> a root scan, where the interval allows: case 2 in closed form (c* = 1/2), case 1 of
    !> DW and MD by Brent on F(x, y) in y within the interval's y range (widened at most
    !> three times). done = .false.: not applicable here (the caller scans for roots).
-   subroutine local_state(model, params, ch, i, x, t, s, done, status, errmsg)
+   subroutine local_state(model, params, ch, i, x, t, s, done, status, errmsg, hint)
       use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-      use wa_curve, only: curve_case2_load
       integer, intent(in) :: model, i
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
@@ -1345,12 +1409,15 @@ contains
       logical, intent(out) :: done
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      type(y_hint_type), intent(inout), optional :: hint
       type(brent_type) :: solver
-      real(wp) :: y_guess, width, lo, hi, f_lo, f_hi, y
-      logical :: conv
+      real(wp) :: y_guess, width, lo, hi, f_lo, f_hi, y, y_lin, step, slope
+      logical :: conv, hinted, found
       integer :: iter, zi, zj
       done = .false.
       status = wa_ok
+      hinted = .false.
+      if (present(hint)) hinted = hint%n >= 2
       if (.not. (model == model_dw .or. model == model_md) .or. params%sigma0 <= 0.0_wp) return
       zi = ch%zone(i); zj = ch%zone(i + 1)
       if ((zi == zone_whole_period .or. zi == zone_full_contact) .and. &
@@ -1361,30 +1428,91 @@ contains
          s%zone_case = zone_whole_period
       else if (zi == zone_inside .and. zj == zone_inside .and. ch%event(i) /= event_switch &
          .and. ch%event(i + 1) /= event_switch .and. ch%y(i) < 0.0_wp .and. ch%y(i + 1) < 0.0_wp) then
-         y_guess = ch%y(i) + t*(ch%y(i + 1) - ch%y(i))
-         width = abs(ch%y(i + 1) - ch%y(i)) + 1.0e-9_wp*abs(y_guess)
-         do iter = 1, 4
-            lo = y_guess - width; hi = min(y_guess + width, 0.0_wp)
-            f_lo = curve_residual(model, params, x, lo)
-            f_hi = curve_residual(model, params, x, hi)
-            if (f_lo <= 0.0_wp .and. f_hi >= 0.0_wp) exit
-            width = 4.0_wp*width
-         end do
-         if (.not. (f_lo <= 0.0_wp .and. f_hi >= 0.0_wp)) return
-         call brent_init(solver, lo, f_lo, hi, f_hi, 1.0e-16_wp)
+         ! the guess: extrapolated from the previous nodes of the run (quadratic), the
+         ! bracket stepped from it towards the root (the slope's sign is the previous
+         ! node's); else interpolated along the chain interval, the bracket around it
+         found = .false.
+         if (hinted) then
+            associate (hx => hint%x, hy => hint%y, m => hint%n)
+               y_lin = hy(m) + (x - hx(m))*(hy(m) - hy(m - 1))/(hx(m) - hx(m - 1))
+               y_guess = y_lin
+               width = 0.25_wp*abs(y_lin - hy(m))
+               if (m >= 3) then
+                  y_guess = hy(1)*(x - hx(2))*(x - hx(3))/((hx(1) - hx(2))*(hx(1) - hx(3))) &
+                     + hy(2)*(x - hx(1))*(x - hx(3))/((hx(2) - hx(1))*(hx(2) - hx(3))) &
+                     + hy(3)*(x - hx(1))*(x - hx(2))/((hx(3) - hx(1))*(hx(3) - hx(2)))
+                  width = 0.25_wp*abs(y_guess - y_lin)
+               end if
+            end associate
+            y_guess = min(y_guess, 0.0_wp)
+            width = max(width, 1.0e-13_wp*abs(y_guess))
+            f_lo = curve_residual(model, params, x, y_guess)
+            step = -sign(width, f_lo*hint%slope)
+            lo = y_guess
+            do iter = 1, 12
+               hi = min(lo + step, 0.0_wp)
+               f_hi = curve_residual(model, params, x, hi)
+               if (f_lo*f_hi <= 0.0_wp) then
+                  found = .true.
+                  exit
+               end if
+               lo = hi; f_lo = f_hi
+               step = 4.0_wp*step
+            end do
+         end if
+         if (.not. found) then
+            y_guess = ch%y(i) + t*(ch%y(i + 1) - ch%y(i))
+            width = 0.125_wp*abs(ch%y(i + 1) - ch%y(i)) + 1.0e-9_wp*abs(y_guess)
+            do iter = 1, 4
+               lo = y_guess - width; hi = min(y_guess + width, 0.0_wp)
+               f_lo = curve_residual(model, params, x, lo)
+               f_hi = curve_residual(model, params, x, hi)
+               ! F falls through the root where the branch runs backwards in a*
+               if (f_lo*f_hi <= 0.0_wp) exit
+               width = 4.0_wp*width
+            end do
+         end if
+         if (.not. (f_lo*f_hi <= 0.0_wp)) then
+            if (present(hint)) hint%n = 0
+            return
+         end if
+         slope = sign(1.0_wp, (f_hi - f_lo)*(hi - lo))
+         ! tolerance: the rounding noise of F moves its root by ~10 ulps of y; a tighter
+         ! one only spends evaluations closing the bracket against that noise
+         call brent_init(solver, lo, f_lo, hi, f_hi, 32.0_wp*epsilon(1.0_wp)*abs(y_guess))
          do iter = 1, 200
-            call brent_propose(solver, y, conv)
+            call brent_propose(solver, y, conv, settle=.true.)
             if (conv) exit
             call brent_accept(solver, curve_residual(model, params, x, y))
          end do
          if (.not. conv) return
          s = curve_state(model, params, x, solver%b)
-         if (s%zone_case /= zone_inside .or. .not. ieee_is_finite(s%p_star)) return
+         ! (finite without ieee_is_finite, and no local use of a module that uses
+         ! ieee_arithmetic: either makes gfortran save and restore the floating-point
+         ! state around every point solve)
+         if (s%zone_case /= zone_inside .or. .not. abs(s%p_star) <= huge(1.0_wp)) then
+            if (present(hint)) hint%n = 0
+            return
+         end if
+         if (present(hint)) then
+            if (hint%n == 3) then
+               hint%x(1:2) = hint%x(2:3); hint%y(1:2) = hint%y(2:3)
+            end if
+            hint%n = min(hint%n + 1, 3)
+            hint%x(hint%n) = x; hint%y(hint%n) = solver%b
+            hint%slope = slope
+         end if
       else
+         if (present(hint)) hint%n = 0
          return
       end if
-      call state_mean_gap(model, params, s, s%gbar, status, errmsg)
-      done = status == wa_ok
+      ! a solved state of the branch: its mean gap needs no argument checks
+      if (model == model_dw) then
+         s%gbar = dw_state_gbar(params, s)
+      else
+         s%gbar = md_state_gbar(params, s)
+      end if
+      done = abs(s%gbar) <= huge(1.0_wp)
    end subroutine local_state
 
    !> The case-1 state of chain interval i at curve variable y: Brent on F(a*, y) in a*
@@ -1419,7 +1547,7 @@ contains
       end if
       call brent_init(solver, lo, f_lo, hi, f_hi, 1.0e-16_wp)
       do iter = 1, 200
-         call brent_propose(solver, a, done)
+         call brent_propose(solver, a, done, settle=.true.)
          if (done) exit
          call brent_accept(solver, curve_residual(model, params, a, y))
       end do

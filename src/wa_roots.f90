@@ -38,11 +38,15 @@ contains
       solver%xtol = xtol
    end subroutine brent_init
 
-   !> Next abscissa to evaluate, or done = .true. when b is converged.
-   pure subroutine brent_propose(solver, x, done)
+   !> Next abscissa to evaluate, or done = .true. when b is converged. settle (default
+   !> .false.): b is also converged when the interpolation puts the root within the
+   !> tolerance of b (Brent would then spend evaluations closing the far end of the
+   !> bracket, one tolerance step at a time, against the rounding noise of f).
+   pure subroutine brent_propose(solver, x, done, settle)
       type(brent_type), intent(inout) :: solver
       real(wp), intent(out) :: x
       logical, intent(out) :: done
+      logical, intent(in), optional :: settle
       real(wp) :: tol1, xm, p, q, r, s
 
       associate (a => solver%a, b => solver%b, c => solver%c, fa => solver%fa, &
@@ -79,6 +83,12 @@ contains
             end if
          else
             d = xm; e = d
+         end if
+         if (abs(d) <= tol1 .and. present(settle)) then
+            if (settle) then       ! an interpolation step (a bisection step is > tol1)
+               done = .true.
+               return
+            end if
          end if
          a = b; fa = fb
          if (abs(d) > tol1) then
