@@ -271,7 +271,7 @@ contains
       type(path_type) :: path
       type(branch_type) :: branch
       character(len=256) :: msg
-      character(len=80), allocatable :: notes(:)
+      character(len=160), allocatable :: notes(:)
       real(wp) :: energy(64)
       integer :: i, status
 
@@ -282,15 +282,21 @@ contains
       if (status /= wa_ok) call numerical_error(status, msg)
       call load_jump_energies(opts%model, params, branch, path, energy, status, msg)
       if (status /= wa_ok) call numerical_error(status, msg)
-      notes = [character(len=80) :: "stage: 1 loading, 2 unloading", event_legend(1), &
+      notes = [character(len=160) :: "stage: 1 loading, 2 unloading", event_legend(1), &
          event_legend(2), "P_fc = "//format_real(path%p_fc)//"  P_pf = "// &
          format_real(path%p_pf), "energy released by each jump (units p* Delta per period):"]
       do i = 1, path%n
-         if (path%event(i) == event_jump_start .and. energy(i) == energy(i)) &
-            notes = [character(len=80) :: notes, "  jump starting at event row "//int_text(i)// &
-            ", P* = "//format_real(path%p_star(i))//": "//format_real(energy(i))]
+         if (path%event(i) /= event_jump_start) cycle
+         if (energy(i) == energy(i)) then
+            notes = [character(len=160) :: notes, "  jump starting at event row "//int_text(i)// &
+               ", P* = "//format_real(path%p_star(i))//": "//format_real(energy(i))]
+         else                    ! NaN: the separated state is not on the branch
+            notes = [character(len=160) :: notes, "  jump starting at event row "//int_text(i)// &
+               ", P* = "//format_real(path%p_star(i))//": not defined", &
+               "    (it leaves or lands on separated surfaces: a pull-off or a jump-in)"]
+         end if
       end do
-      notes = [character(len=80) :: notes, "P-a loop area (the paper's measure, not an "// &
+      notes = [character(len=160) :: notes, "P-a loop area (the paper's measure, not an "// &
          "energy) = "//format_real(path%loop_area)]
       call write_header(out, opts%format, "load-controlled loading and unloading", &
          model_name(opts%model), params, "stage event a_star c_star P_star", notes)

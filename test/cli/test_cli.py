@@ -118,6 +118,18 @@ def test_path_lists_the_papers_jumps(cli):
     assert events == [(1, 3), (1, 4), (1, 3), (1, 5), (2, 6), (2, 3), (2, 7)]
 
 
+def test_path_header_lists_every_jump_energy_in_full(cli):
+    # the energy of each load-control jump, in full (a note once cut off its exponent):
+    # alpha = 0.3, mu = 5 snaps into full contact releasing 9.18e-3; the jump-in and the
+    # pull-off have no finite energy and say so
+    out = run(cli, "path", "--model", "dw", "--alpha", "0.3", "--mu", "5").stdout
+    lines = [line for line in out.splitlines() if line.startswith("#   jump starting at")]
+    assert len(lines) == 3
+    values = [line.rsplit(": ", 1)[1] for line in lines]
+    assert values[0] == values[2] == "not defined"
+    assert float(values[1]) == pytest.approx(9.1834906501750517e-3, rel=1e-9)
+
+
 def test_output_file(cli, tmp_path):
     out = tmp_path / "t.csv"
     run(cli, "point", "--a-star", "0.2", "--format", "csv", "--output", str(out))
