@@ -80,6 +80,9 @@ module wa_branch
    end type curve_point
 
    integer, parameter :: max_newton = 12
+   !> What fold_before_switch found: a fold (pushed), or a turn of P* within round-off
+   !> of the switch (the corner is the extremum)
+   integer, parameter :: turn_pushed = 0, turn_at_switch = 2
    !> Width of the last stretch before a* = 1/2 that approach_half samples
    real(wp), parameter :: end_width = 1.0e-4_wp
 
@@ -688,6 +691,7 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       real(wp) :: a_next, v_here, v_next, dir, slope_before
       type(curve_point) :: q
+      integer :: turn_at
 
       a_next = min(0.5_wp - 1.0e-15_wp, max(1.0e-300_wp, p%a + 2.0_wp*h*p%t(1)))
       v_here = curve_residual(model, params, p%a, curve_y_max)
@@ -705,7 +709,16 @@ contains
       ! P* turned between the last point and the switch, where the curve runs steeply up
       ! to c* = 1/2 and the corrector cannot follow: locate that fold by the point solver
       if (p%dp*slope_before < 0.0_wp) then
-         call fold_before_switch(model, params, p, q%a, status, errmsg, branch)
+         call fold_before_switch(model, params, p, q%a, status, errmsg, branch, turn_at)
+         if (status /= wa_ok) return
+         ! a turn within round-off of the switch is no fold: the corner is the extremum,
+         ! with P* arriving as it did before the turn
+         if (turn_at == turn_at_switch) slope_before = p%dp
+      else if (p%dp*(curve_case2_load(model, params, q%a) - branch%p_star(branch%n)) < 0.0_wp &
+         .and. branch%n > 0) then
+         ! P* leaves p and arrives at the switch in the same direction, yet ends on the
+         ! other side of p's load: the slopes are not to be trusted there, the samples are
+         call folds_before_switch(model, params, p, q%a, slope_before, status, errmsg, branch)
          if (status /= wa_ok) return
       end if
       q = case2_point(model, q%a, dir)
@@ -716,7 +729,7 @@ contains
    !> The extremum of P* on the case-1 curve between p and the switch at a_switch, by
    !> golden sections on P*(a*) of the state nearest p's c* (to 1e-12 relative in a*),
    !> pushed as a fold.
-   subroutine fold_before_switch(model, params, p, a_switch, status, errmsg, branch)
+   subroutine fold_before_switch(model, params, p, a_switch, status, errmsg, branch, turn_at)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       type(curve_point), intent(in) :: p
@@ -724,12 +737,16 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type), intent(inout) :: branch
+      !> turn_pushed: the fold is pushed (or none found); turn_at_switch: P* turns within
+      !> round-off of the switch, no fold is pushed
+      integer, intent(out) :: turn_at
       real(wp), parameter :: golden = 0.3819660112501051518_wp
       type(state_type) :: s, s_hint
       type(curve_point) :: f
-      real(wp) :: lo, hi, x1, x2, f1, f2, sgn
+      real(wp) :: lo, hi, x1, x2, f1, f2, sgn, p_switch
       integer :: iter
 
+      turn_at = turn_pushed
       s_hint = curve_state(model, params, p%a, p%y)
       sgn = sign(1.0_wp, p%dp)                 ! +1: a maximum of P*, -1: a minimum
       lo = min(p%a, a_switch)
@@ -756,9 +773,16 @@ contains
             "could not be located", status, errmsg)
          return
       end if
-      ! a turn of P* within round-off of both ends is no fold: the corner is the extremum
-      if (sgn*(s%p_star - max(sgn*s_hint%p_star, sgn*curve_case2_load(model, params, &
-         a_switch))*sgn) <= 1.0e-12_wp*max(1.0_wp, abs(s%p_star))) return
+      ! a turn of P* within round-off of the switch's load, beyond p's (or of both) is no
+      ! fold: the corner is the extremum. (One within round-off of p's load only is a
+      ! fold: P* then moves on to the switch by more than round-off.)
+      p_switch = curve_case2_load(model, params, a_switch)
+      if (sgn*(s%p_star - max(sgn*s_hint%p_star, sgn*p_switch)*sgn) <= &
+         1.0e-12_wp*max(1.0_wp, abs(s%p_star)) .and. sgn*p_switch >= sgn*s_hint%p_star - &
+         1.0e-12_wp*max(1.0_wp, abs(s%p_star))) then
+         turn_at = turn_at_switch
+         return
+      end if
       f%a = s%a_star
       f%y = curve_variable(model, s)
       f%zone_case = zone_inside
@@ -772,6 +796,90 @@ contains
          load_at = st%p_star
       end function load_at
    end subroutine fold_before_switch
+
+   !> The folds of P* on the case-1 curve between p and the switch at a_switch where the
+   !> slopes at the two ends contradict the loads (P* leaves p rising, yet reaches the
+   !> switch below p's load, or the reverse): the curve runs steeply up to c* = 1/2 there
+   !> and the slope at the switch is unreliable. P* is sampled at 32 points by the point
+   !> solver; every turn of the samples is refined by golden sections and pushed as a
+   !> fold, in order; slope_in is the sign with which P* arrives at the switch.
+   subroutine folds_before_switch(model, params, p, a_switch, slope_in, status, errmsg, &
+         branch)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(curve_point), intent(in) :: p
+      real(wp), intent(in) :: a_switch
+      real(wp), intent(inout) :: slope_in
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type), intent(inout) :: branch
+      integer, parameter :: n = 32
+      real(wp), parameter :: golden = 0.3819660112501051518_wp
+      type(state_type) :: s_hint, s
+      type(curve_point) :: f
+      real(wp) :: a(0:n), load(0:n), d(0:n), sgn, lo, hi, x1, x2, f1, f2, noise
+      integer :: k, iter
+
+      status = wa_ok
+      s_hint = curve_state(model, params, p%a, p%y)
+      do k = 0, n
+         a(k) = p%a + (a_switch - p%a)*real(k, wp)/real(n, wp)
+      end do
+      load(0) = s_hint%p_star
+      load(n) = curve_case2_load(model, params, a_switch)
+      do k = 1, n - 1
+         load(k) = load_at(a(k))
+         if (status /= wa_ok) return
+      end do
+      ! differences below the rounding of P* carry no sign
+      noise = 64.0_wp*epsilon(1.0_wp)*maxval(abs(load))
+      ! d(0): the slope P* leaves p with (a turn before the first sample shows there)
+      d(0) = sign(tiny(1.0_wp), p%dp)
+      d(1:n) = load(1:n) - load(0:n - 1)
+      where (abs(d(1:n)) <= noise) d(1:n) = 0.0_wp
+      do k = 1, n
+         if (d(k) == 0.0_wp) d(k) = d(k - 1)
+      end do
+      slope_in = sign(1.0_wp, d(n))
+      do k = 0, n - 1
+         if (.not. (d(k)*d(k + 1) < 0.0_wp)) cycle
+         sgn = sign(1.0_wp, d(k))             ! +1: a maximum at sample k, -1: a minimum
+         lo = min(a(max(k - 1, 0)), a(k + 1)); hi = max(a(max(k - 1, 0)), a(k + 1))
+         x1 = lo + golden*(hi - lo); x2 = hi - golden*(hi - lo)
+         f1 = sgn*load_at(x1); f2 = sgn*load_at(x2)
+         do iter = 1, 200
+            if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
+            if (f1 > f2) then
+               hi = x2; x2 = x1; f2 = f1
+               x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
+            else
+               lo = x1; x1 = x2; f1 = f2
+               x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
+            end if
+         end do
+         if (status /= wa_ok) return
+         call curve_equilibrium(model, params, 0.5_wp*(lo + hi), s_hint%c_star, s, status, &
+            errmsg)
+         if (status /= wa_ok) return
+         if (s%zone_case /= zone_inside) then
+            call set_error(wa_numerical_error, "trace_branch: a fold before a case switch "// &
+               "could not be located", status, errmsg)
+            return
+         end if
+         f%a = s%a_star
+         f%y = curve_variable(model, s)
+         f%zone_case = zone_inside
+         f%t = p%t
+         call push(model, params, f, event_fold, nint(sgn), branch)
+      end do
+   contains
+      real(wp) function load_at(x)
+         real(wp), intent(in) :: x
+         type(state_type) :: st
+         call curve_equilibrium(model, params, x, s_hint%c_star, st, status, errmsg)
+         load_at = st%p_star
+      end function load_at
+   end subroutine folds_before_switch
 
    !> The a* where F(a*, y_max) = 0 between a1 and a2 (case switch, to ~1e-15).
    function switch_abscissa(model, params, a1, v1, a2, v2, status, errmsg) result(a)

@@ -21,7 +21,8 @@ contains
          new_unittest("dw_mu_zero_is_westergaard", test_dw_mu_zero), &
          new_unittest("md_mechanism_change_windows", test_md_windows), &
          new_unittest("dw_roots_tiny_alpha", test_dw_roots_tiny_alpha), &
-         new_unittest("dw_trace_large_mu", test_dw_trace_large_mu)]
+         new_unittest("dw_trace_large_mu", test_dw_trace_large_mu), &
+         new_unittest("dw_shallow_corner_minimum", test_dw_shallow_corner)]
    end subroutine collect_robustness
 
    type(params_type) function params_of(alpha, mu) result(params)
@@ -151,5 +152,52 @@ contains
       call critical_forces(model_dw, params_of(0.3_wp, 1.0e9_wp), fc, pf, status)
       call check(error, status == wa_numerical_error, "dw at mu = 1e9: clean refusal")
    end subroutine test_dw_trace_large_mu
+
+   !> DW alpha = 0.47, mu in [0.50894, 0.50898]: P* falls along case 1 into the switch to
+   !> c* = 1/2 and turns within round-off of it. The tracer dropped that turn as no fold
+   !> but left the corner unmarked, so the corner counted as stable and the unloading made
+   !> no progress (wa_numerical_error at 263 of 401 mu). The corner is the minimum: the
+   !> pull-off is a jump from case 2 at the lowest load of the branch, until a case-1 fold
+   !> takes over.
+   subroutine test_dw_shallow_corner(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(branch_type) :: b
+      type(path_type) :: path
+      type(params_type) :: p
+      integer :: status, j
+      do j = 0, 40
+         p = params_of(0.47_wp, 0.50894_wp + 1.0e-6_wp*j)
+         call trace_branch(model_dw, p, b, status)
+         call check(error, status == wa_ok, "branch traced")
+         if (allocated(error)) return
+         call path_from_branch(model_dw, p, b, path, status)
+         call check(error, status == wa_ok, "load path in the shallow-corner window")
+         if (allocated(error)) return
+         call check(error, path%p_pf == minval(b%p_star(1:b%n)), "P_pf is the lowest load")
+         ! the corner minimum gives way to a case-1 fold at mu = 0.508969
+         if (j <= 20) call check(error, path%pf_mechanism == mechanism_jump_case2, &
+            "pull-off from the corner")
+         if (j >= 35) call check(error, path%pf_mechanism == mechanism_jump_case1, &
+            "pull-off from the case-1 fold")
+         if (allocated(error)) return
+      end do
+      ! P* rises from a case-1 fold, turns (a maximum within 1e-9 of the last traced
+      ! point, or within its first 1/32) and falls into the switch, whose slope the
+      ! tracer read as rising: the maximum is now located from samples, the corner is
+      ! the minimum, and the pull-off lands on the rising piece and leaves from the fold
+      do j = 1, 2
+         p = params_of(merge(0.51_wp, 4.8802567534857494e-1_wp, j == 1), &
+            merge(0.5623852_wp, 5.3269258538007114e-1_wp, j == 1))
+         call trace_branch(model_dw, p, b, status)
+         call check(error, status == wa_ok, "branch traced (fold before the switch)")
+         if (allocated(error)) return
+         call path_from_branch(model_dw, p, b, path, status)
+         call check(error, status == wa_ok, "load path with a fold just before the switch")
+         if (allocated(error)) return
+         call check(error, path%p_pf == minval(b%p_star(1:b%n)), "P_pf is the lowest load")
+         call check(error, path%pf_mechanism == mechanism_jump_case1, "pull-off from the fold")
+         if (allocated(error)) return
+      end do
+   end subroutine test_dw_shallow_corner
 
 end module test_robustness
