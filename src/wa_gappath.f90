@@ -121,6 +121,9 @@ module wa_gappath
    real(wp), parameter :: tol_value = 1.0e-14_wp
    !> Bisections of a piece, at most
    integer, parameter :: max_depth = 48
+   !> Tails of a panel below this share of its values that do not shrink when the panel
+   !> is halved are the noise of the point solves (accepted: bisecting cannot help)
+   real(wp), parameter :: noise_level = 1.0e-11_wp
    !> Chain intervals per first panel of a piece
    real(wp), parameter :: chain_per_panel = 16.0_wp
    !> Panels of one cover, at most (a bound on the work: typical covers need 10-60)
@@ -831,7 +834,7 @@ contains
    !> Keep the panel [ua, ub] of piece p (values pc, gc, integral ic at its nodes) if its
    !> interpolants are resolved, else bisect it; store the kept panels in order.
    recursive subroutine adapt(model, params, ch, cov, p, ua, ub, pc, gc, ic, depth, status, &
-         errmsg)
+         errmsg, parent_tails)
       integer, intent(in) :: model, p, depth
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
@@ -839,9 +842,23 @@ contains
       real(wp), intent(in) :: ua, ub, pc(:), gc(:), ic
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      !> the Legendre tails of P* and gbar* on the parent panel
+      real(wp), intent(in), optional :: parent_tails(2)
       real(wp) :: um, pl(size(pc)), gl(size(pc)), il, pr(size(pc)), gr(size(pc)), ir
-      real(wp) :: frac, x1, xn, noise_p, noise_g
+      real(wp) :: frac, x1, xn, noise_p, noise_g, tails(2)
       status = wa_ok
+      tails = [legendre_tail(cov%rule, pc), legendre_tail(cov%rule, gc)]
+      ! evaluation noise (MD's quadratures: ~1e-13 of P* at large alpha): halving did not
+      ! shrink the tails, which are already at the noise level of the values; a
+      ! resolved panel's tails shrink ~2^16 on halving, a square-root end's ~2^0.5
+      if (present(parent_tails)) then
+         if (all(tails >= 0.25_wp*parent_tails) .and. &
+            tails(1) <= noise_level*maxval(abs(pc)) .and. &
+            tails(2) <= noise_level*maxval(abs(gc))) then
+            call store(cov, ua, ub, pc, gc, ic)
+            return
+         end if
+      end if
       ! tolerance per panel: relative to its own values, or to the chain's scale times
       ! its share of the piece (an end singularity then costs a few bisections), or to
       ! the rounding of P* and gbar* (~100 ulps of the chain's largest: cancellation)
@@ -875,14 +892,25 @@ contains
       if (status /= wa_ok) return
       call eval_panel(model, params, ch, cov, p, um, ub, pr, gr, ir, status, errmsg)
       if (status /= wa_ok) return
-      call adapt(model, params, ch, cov, p, ua, um, pl, gl, il, depth + 1, status, errmsg)
+      call adapt(model, params, ch, cov, p, ua, um, pl, gl, il, depth + 1, status, errmsg, &
+         tails)
       if (status /= wa_ok) return
-      call adapt(model, params, ch, cov, p, um, ub, pr, gr, ir, depth + 1, status, errmsg)
+      call adapt(model, params, ch, cov, p, um, ub, pr, gr, ir, depth + 1, status, errmsg, &
+         tails)
    end subroutine adapt
 
    !> The Legendre series of the values f at the rule's nodes has decayed: its last
    !> three coefficients are below tol_value times the largest, or a few ulps of max |f|,
    !> or tol_abs.
+   !> The largest of the last three Legendre coefficients of the values f at the nodes.
+   pure real(wp) function legendre_tail(rule, f) result(tail)
+      type(rule_type), intent(in) :: rule
+      real(wp), intent(in) :: f(:)
+      real(wp) :: c(rule%n)
+      c = matmul(rule%leg, f)
+      tail = maxval(abs(c(rule%n - 2:rule%n)))
+   end function legendre_tail
+
    pure logical function resolved(rule, f, tol_abs)
       type(rule_type), intent(in) :: rule
       real(wp), intent(in) :: f(:), tol_abs
