@@ -46,6 +46,14 @@ if __name__ == "__main__":
         print(f"{model}: W* at {energy.status.size} points, {len(failed)} failed (holes)"
               + "".join(f"\n    alpha = {energy.alpha[i, j]:.4g}, mu = {energy.mu[i, j]:.4g}: "
                         f"{energy.messages[(int(i), int(j))]}" for i, j in failed))
-        print(f"{model}: largest W*/(pi alpha^2/2) at mu = {ENERGY_MU[0]:g}: "
-              f"{np.nanmax(energy.W_fraction[0]):.4f}; over the grid: "
-              f"{np.nanmax(energy.W_fraction):.4f}")
+        frac = energy.W_fraction
+        i, j = np.unravel_index(np.nanargmax(frac), frac.shape)
+        over = frac > 1.0
+        print(f"{model}: W*/(pi alpha^2/2) at mu = {ENERGY_MU[-1]:g}: {frac[-1, 0]:.4f} "
+              f"(alpha = {ENERGY_ALPHA[0]:g}) to {frac[-1, -1]:.4f} (alpha = "
+              f"{ENERGY_ALPHA[-1]:g}); largest at mu = {ENERGY_MU[0]:g}: "
+              f"{np.nanmax(frac[0]):.4f}; largest {frac[i, j]:.4f} at alpha = "
+              f"{ENERGY_ALPHA[j]:.3g}, mu = {ENERGY_MU[i]:.3g}"
+              + (f"; above 1 for alpha {energy.alpha[over].min():.3g}..."
+                 f"{energy.alpha[over].max():.3g}, mu {energy.mu[over].min():.3g}..."
+                 f"{energy.mu[over].max():.3g}" if over.any() else ""))

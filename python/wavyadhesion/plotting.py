@@ -293,8 +293,10 @@ def _pchip(x, y, xf):
     k = np.clip(np.searchsorted(x, xf, side="right") - 1, 0, x.size - 2)
     t = (xf - x[k]) / h[k]
     y0, y1, d0, d1 = y[..., k], y[..., k + 1], d[..., k] * h[k], d[..., k + 1] * h[k]
-    return (y0 * (2 * t**3 - 3 * t**2 + 1) + d0 * (t**3 - 2 * t**2 + t)
-            + y1 * (-2 * t**3 + 3 * t**2) + d1 * (t**3 - t**2))
+    out = (y0 * (2 * t**3 - 3 * t**2 + 1) + d0 * (t**3 - 2 * t**2 + t)
+           + y1 * (-2 * t**3 + 3 * t**2) + d1 * (t**3 - t**2))
+    # at a node its own value (finite next to a hole, where NaN * 0 would spoil it)
+    return np.where(t == 0, y0, np.where(t == 1, y1, out))
 
 
 def _energy_grid(energy, refine):
