@@ -353,8 +353,11 @@ def _draw_energy(ax, energy, levels, refine):
                         linewidths=0.9, linestyles="solid", zorder=1.9)
     points = _energy_label_points(cs, cs.levels, ax)
     if points:
-        ax.clabel(cs, fmt=lambda v: f"{v:g}", fontsize=7.5, inline=True, inline_spacing=3,
-                  manual=points, colors=_ENERGY_COLOUR)
+        texts = ax.clabel(cs, fmt=lambda v: f"{v:g}", fontsize=7.5, inline=True,
+                          inline_spacing=3, manual=points, colors=_ENERGY_COLOUR)
+        for text in texts:     # all read upwards (a vertical line may come out at 270)
+            r = text.get_rotation() % 180
+            text.set_rotation(r - 180 if r > 91 else r)
     failed = ~np.asarray(energy.ok)
     if failed.any():
         ax.plot(np.asarray(energy.alpha)[failed], np.asarray(energy.mu)[failed], ls="none",
