@@ -69,6 +69,20 @@ def test_process_pool_equals_serial():
                                            chunk_size=3))
 
 
+def test_dask_equals_serial():
+    """dask.distributed's executor (a test requirement, tools/setup.sh); workers as
+    threads of this process (~0.05 s to start; the process pool above covers pickling)."""
+    distributed = pytest.importorskip("distributed")
+    alpha = np.array([0.3, FAILING[0]])[None, :]
+    mu = np.array([1.0, FAILING[1]])[:, None]
+    serial = wa.energy_lost("dw", alpha, mu, errors="nan")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        assert_same(serial, wa.energy_lost("dw", alpha, mu, errors="nan", chunk_size=1,
+                                           executor=client.get_executor()))
+
+
 def test_failure_is_nan_with_status():
     e = wa.energy_lost("dw", [0.3, FAILING[0]], [1.0, FAILING[1]], errors="nan")
     assert np.isfinite(e.W_star[0]) and np.isnan(e.W_star[1]) and np.isnan(e.W_fraction[1])
