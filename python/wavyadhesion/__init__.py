@@ -24,6 +24,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 
 from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_meaning
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
+from ._energy import EnergyLost, energy_lost
 from ._core import (
     EVENTS,
     MECHANISMS,
@@ -71,6 +72,8 @@ __all__ = [
     "GAP_CRITICAL_FIELDS",
     "GapCritical",
     "gap_critical",
+    "EnergyLost",
+    "energy_lost",
     "AdhesionMap",
     "Boundary",
     "SpecialPoint",

@@ -268,7 +268,105 @@ def _jkr_full_contact(alpha):
 _MAP_SHORT = ("gradual", "jump c1", "jump c2", "snap")
 
 
-def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
+#: Colour of the W* contours (distinct from the greys and black of the map's lines).
+_ENERGY_COLOUR = "#7b2d8e"
+
+
+def _pchip(x, y, xf):
+    """Monotone cubic (Fritsch-Carlson) interpolation of y(x) along the last axis of `y`
+    at `xf`; NaN-aware: an interval with a NaN end is NaN, and a node next to a NaN takes
+    the one-sided slope (a failed point leaves a hole of its own cells only)."""
+    x = np.asarray(x, dtype=float)
+    h = np.diff(x)
+    delta = np.diff(y, axis=-1) / h
+    d = np.zeros_like(y)
+    left, right = delta[..., :-1], delta[..., 1:]
+    w1, w2 = 2 * h[1:] + h[:-1], h[1:] + 2 * h[:-1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        harmonic = (w1 + w2) / (w1 / left + w2 / right)
+    same = np.isfinite(left) & np.isfinite(right) & (left * right > 0)
+    inner = np.where(same, harmonic, 0.0)
+    inner = np.where(np.isfinite(left) & ~np.isfinite(right), left, inner)
+    inner = np.where(~np.isfinite(left) & np.isfinite(right), right, inner)
+    d[..., 1:-1] = inner
+    d[..., 0], d[..., -1] = delta[..., 0], delta[..., -1]
+    k = np.clip(np.searchsorted(x, xf, side="right") - 1, 0, x.size - 2)
+    t = (xf - x[k]) / h[k]
+    y0, y1, d0, d1 = y[..., k], y[..., k + 1], d[..., k] * h[k], d[..., k + 1] * h[k]
+    out = (y0 * (2 * t**3 - 3 * t**2 + 1) + d0 * (t**3 - 2 * t**2 + t)
+           + y1 * (-2 * t**3 + 3 * t**2) + d1 * (t**3 - t**2))
+    # at a node its own value (finite next to a hole, where NaN * 0 would spoil it)
+    return np.where(t == 0, y0, np.where(t == 1, y1, out))
+
+
+def _energy_grid(energy, refine):
+    """(alpha, mu, W*/(pi alpha^2/2)) of an EnergyLost computed on a grid (alpha along
+    axis 1, mu along axis 0), refined `refine` times per cell by monotone cubic
+    interpolation in (log alpha, log mu)."""
+    frac = np.asarray(energy.W_fraction, dtype=float)
+    if frac.ndim != 2 or min(frac.shape) < 2:
+        raise ValueError("energy: need an energy_lost result on a grid (alpha of shape "
+                         f"(1, n), mu of shape (m, 1), n, m >= 2); got shape {frac.shape}")
+    la = np.log10(np.asarray(energy.alpha, dtype=float)[0, :])
+    lm = np.log10(np.asarray(energy.mu, dtype=float)[:, 0])
+    if not (np.all(np.diff(la) > 0) and np.all(np.diff(lm) > 0)):
+        raise ValueError("energy: alpha and mu of the grid must increase")
+    refine = max(1, int(refine))
+    la_f = np.linspace(la[0], la[-1], refine * (la.size - 1) + 1)
+    lm_f = np.linspace(lm[0], lm[-1], refine * (lm.size - 1) + 1)
+    fine = _pchip(la, frac, la_f)                       # along alpha, every mu row
+    fine = _pchip(lm, fine.T, lm_f).T                   # then along mu
+    return 10 ** la_f, 10 ** lm_f, fine
+
+
+def _energy_label_points(cs, levels, ax):
+    """One label point per level: on its contour where the contour is nearest the top
+    of the axes (log mu within 92 % of the visible span), so that the labels sit in a row
+    above the region labels; a level whose contour does not get there is labelled at its
+    highest point."""
+    lo, hi = np.log10(ax.get_ylim())
+    target = lo + 0.92 * (hi - lo)
+    points = []
+    for k, level in enumerate(cs.levels):
+        if level not in levels:
+            continue
+        segs = [s for s in cs.allsegs[k] if len(s) >= 2]
+        if not segs:
+            continue
+        best = None
+        for seg in segs:
+            ly = np.log10(seg[:, 1])
+            i = int(np.argmin(np.abs(ly - min(target, ly.max()))))
+            score = abs(ly[i] - target)
+            if best is None or score < best[0]:
+                best = (score, seg[i])
+        points.append((float(best[1][0]), float(best[1][1])))
+    return points
+
+
+def _draw_energy(ax, energy, levels, refine):
+    """W*/(pi alpha^2/2) contours (thin, coloured), one label per level; failed points
+    marked with a small cross. Returns the number of failed points."""
+    alpha_f, mu_f, fine = _energy_grid(energy, refine)
+    with np.errstate(invalid="ignore"):
+        cs = ax.contour(alpha_f, mu_f, fine, levels=sorted(levels), colors=_ENERGY_COLOUR,
+                        linewidths=0.9, linestyles="solid", zorder=1.9)
+    points = _energy_label_points(cs, cs.levels, ax)
+    if points:
+        texts = ax.clabel(cs, fmt=lambda v: f"{v:g}", fontsize=7.5, inline=True,
+                          inline_spacing=3, manual=points, colors=_ENERGY_COLOUR)
+        for text in texts:     # all read upwards (a vertical line may come out at 270)
+            r = text.get_rotation() % 180
+            text.set_rotation(r - 180 if r > 91 else r)
+    failed = ~np.asarray(energy.ok)
+    if failed.any():
+        ax.plot(np.asarray(energy.alpha)[failed], np.asarray(energy.mu)[failed], ls="none",
+                marker="x", ms=4, mew=0.9, color=_ENERGY_COLOUR, zorder=4)
+    return int(failed.sum())
+
+
+def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=None,
+                 energy_levels=(0.1, 0.3, 0.5, 0.7, 0.9), energy_refine=6):
     """Draw an :class:`~wavyadhesion.AdhesionMap` in the style of Johnson and Greenwood's
     map: log axes (alpha horizontal, mu vertical), one shade per region (full-contact and
     pull-off mechanism pair, labelled), the boundary curves as sharp lines (full contact
@@ -276,6 +374,13 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
     where Westergaard predicts both critical forces within 1 % (hatched), the edge of the
     region where JKR's P_fc is within 1 % (thick grey line; JKR's pull-off, -inf, is
     wrong everywhere) and contours of -P_pf (thin, labelled).
+
+    ``energy``: an :func:`~wavyadhesion.energy_lost` result on a grid (``alpha`` of shape
+    (1, n), ``mu`` of shape (m, 1), both increasing; it may cover part of the map) adds
+    contours of W*/(pi alpha^2/2), the fraction of the work of adhesion lost per
+    gap-controlled cycle, at ``energy_levels`` (purple, one label per level in a row near
+    the top), interpolated ``energy_refine`` times per cell by monotone cubics in
+    (log alpha, log mu); points where the cycle failed (NaN) leave a hole, marked x.
 
     Returns the figure.
     """
@@ -348,6 +453,8 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
     ax.set_yscale("log")
     ax.set_xlim(alpha[0], alpha[-1])
     ax.set_ylim(mu[0], mu[-1])
+    n_energy_failed = None if energy is None else _draw_energy(ax, energy, energy_levels,
+                                                               energy_refine)
     ax.set_xlabel(r"$\alpha$ (adhesion vs. elasticity)")
     ax.set_ylabel(r"$\mu$ (range of adhesive stress)")
     ax.set_title(f"Adhesion map, {amap.model.upper()}: FC = how full contact is reached, "
@@ -370,5 +477,13 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
                            label="edge of: JKR P_fc within 1 %"),
                     Line2D([], [], color="0.25", lw=0.6, ls="dotted",
                            label="contours of -P_pf")]
-    ax.legend(handles=handles, loc="lower left", fontsize=7, framealpha=0.85)
+    if energy is not None:
+        handles.append(Line2D([], [], color=_ENERGY_COLOUR, lw=0.9,
+                              label=r"$W^*/(\pi\alpha^2/2)$ lost per gap cycle"))
+        if n_energy_failed:
+            handles.append(Line2D([], [], ls="none", marker="x", ms=4, mew=0.9,
+                                  color=_ENERGY_COLOUR,
+                                  label=f"$W^*$ failed: hole ({n_energy_failed})"))
+    ax.legend(handles=handles, loc="lower left", fontsize=7, framealpha=0.85,
+              ncol=2 if len(handles) > 7 else 1)
     return fig
