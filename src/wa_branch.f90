@@ -284,7 +284,15 @@ contains
       p%dp = case2_slope(p%a)
       if (p%zone_case == zone_inside) then
          p%y = curve_variable(model, start)
-         call orient(model, params, p, [1.0_wp, 0.0_wp])
+         if (curve_weight(model)*(curve_y_max - p%y) <= 1.0e-12_wp) then
+            ! c* = 1/2 within rounding (the case-1 root is being born at a_start): the
+            ! tangent is undefined there; start on case 2, whose step finds where case 1
+            ! takes over
+            p%zone_case = zone_whole_period
+            p%y = curve_y_max
+         else
+            call orient(model, params, p, [1.0_wp, 0.0_wp])
+         end if
       end if
       call push(model, params, p, event_branch_end, 0, branch)
       h = opts%step_max

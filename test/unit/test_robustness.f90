@@ -22,7 +22,8 @@ contains
          new_unittest("md_mechanism_change_windows", test_md_windows), &
          new_unittest("dw_roots_tiny_alpha", test_dw_roots_tiny_alpha), &
          new_unittest("dw_trace_large_mu", test_dw_trace_large_mu), &
-         new_unittest("dw_shallow_corner_minimum", test_dw_shallow_corner)]
+         new_unittest("dw_shallow_corner_minimum", test_dw_shallow_corner), &
+         new_unittest("dw_case1_root_born_at_a_start", test_dw_root_at_start)]
    end subroutine collect_robustness
 
    type(params_type) function params_of(alpha, mu) result(params)
@@ -199,5 +200,31 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_dw_shallow_corner
+
+   !> Where the case-1 root is born at the branch's first point (F(a_start, y_max) = 0, the
+   !> map's boundary 202), its c* is 1/2 within rounding and its tangent undefined: the
+   !> tracer used to halve its step to underflow (DW alpha 0.396, mu 0.41587; alpha 0.850,
+   !> mu 0.91070). It now starts such a piece on case 2.
+   subroutine test_dw_root_at_start(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: cases(2, 3) = reshape([3.9626886387014770e-1_wp, &
+         4.1586869569991353e-1_wp, 8.5044893418026790e-1_wp, 9.1069851516227895e-1_wp, &
+         3.8274944785163117e-1_wp, 3.9950729210267516e-1_wp], [2, 3])
+      type(branch_type) :: b
+      type(path_type) :: path
+      type(params_type) :: p
+      integer :: status, k
+      do k = 1, size(cases, 2)
+         p = params_of(cases(1, k), cases(2, k))
+         call trace_branch(model_dw, p, b, status)
+         call check(error, status == wa_ok, "branch traced from a root born at a_start")
+         if (allocated(error)) return
+         call path_from_branch(model_dw, p, b, path, status)
+         call check(error, status == wa_ok, "load path")
+         if (allocated(error)) return
+         call check(error, b%a_star(b%n) == 0.5_wp, "the branch reaches full contact")
+         if (allocated(error)) return
+      end do
+   end subroutine test_dw_root_at_start
 
 end module test_robustness
