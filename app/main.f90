@@ -694,7 +694,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(50) = [character(len=100) :: &
+      character(len=100), parameter :: text(52) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -716,7 +716,9 @@ contains
          "            --mu-range LO:HI:N[:log] (--control gap: those of mean-gap control)", &
          "  map       adhesion map (dw, md): boundaries between mechanisms as rows", &
          "            'boundary alpha mu' (--alpha-range, default 0.01:10:200:log;", &
-         "            --mu-range, default 1e-3:1e3:60:log)", &
+         "            --mu-range, default 1e-3:1e3:60:log); --control gap|both: the", &
+         "            boundaries under mean-gap control (codes 3xx approach, 4xx", &
+         "            retraction) instead of / with the load-control ones", &
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &
@@ -731,7 +733,7 @@ contains
          "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
          "                     Dugdale zone half-width of a state without contact)", &
          "  --n N              profile: number of points, in [2, 100000] (default 201)", &
-         "  --control C        load (default) | gap (path, critical)", &
+         "  --control C        load (default) | gap (path, critical, map) | both (map)", &
          "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &
