@@ -49,8 +49,9 @@ module wa_map
    real(wp), parameter :: tol_t = 2.0e-9_wp
    !> Relative accuracy in alpha of a located start or end of a curve
    real(wp), parameter :: tol_alpha = 1.0e-6_wp
-   !> Bound on the curves of one map
-   integer, parameter :: max_boundaries = 64
+   !> Bound on the curves of one map, and on those of load control (which 1, 2) and of gap
+   !> control (3, 4) each: a tangle of one control does not crowd out the other
+   integer, parameter :: max_boundaries = 128, max_per_control = 64
 
    !> One boundary curve: code = 100*which + 10*mech_below + mech_above (which: 1 full
    !> contact, 2 pull-off, 3 gap approach, 4 gap retraction; mech_*: mechanism_* codes
@@ -426,7 +427,7 @@ contains
       integer, intent(in) :: j
       real(wp), intent(in) :: t(:)
       integer, intent(in) :: mech(:, :)
-      integer :: i, k, which
+      integer :: i, k, which, c
       i = first_good(maxval(mech, dim=1), 0)
       do while (i > 0)
          k = first_good(maxval(mech, dim=1), i)
@@ -436,6 +437,8 @@ contains
             if (mech(which, i) < 0 .or. mech(which, k) < 0) cycle
             if (known(map, j, which, mech(which, i), mech(which, k), exp(t(i)), exp(t(k)))) cycle
             if (map%n_boundaries >= max_boundaries) return
+            if (count([(map%boundary(c)%which > 2 .eqv. which > 2, c=1, map%n_boundaries)]) &
+               >= max_per_control) cycle
             call new_curve(map, j, which, mech(which, i), mech(which, k), t(i), t(k))
          end do
          i = k
@@ -1180,8 +1183,8 @@ contains
    subroutine fill_regions(map)
       type(map_type), intent(inout) :: map
       type(probe_type) :: pr
-      real(wp) :: mu_b(64)
-      integer :: to(64), j, which, c, p, nb, i, m, k, order(64)
+      real(wp) :: mu_b(max_boundaries)
+      integer :: to(max_boundaries), j, which, c, p, nb, i, m, k, order(max_boundaries)
       do j = 1, size(map%alpha)
          if (any(map%fc_region(:, j) /= -1) .or. any(map%ga_region(:, j) /= -1)) cycle
          call probe(map%model, map%alpha(j), log(map%mu(1)), pr, map%control)   ! not scanned
