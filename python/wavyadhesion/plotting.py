@@ -373,10 +373,11 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True):
                Line2D([], [], color="k", lw=1.6, ls="--", label="pull-off boundary")]
     if gap_only:
         handles = []
-    if whiches & {3, 4}:
-        handles += [Line2D([], [], color="tab:red", lw=1.6, label="gap approach boundary"),
-                    Line2D([], [], color="tab:red", lw=1.6, ls="--",
-                           label="gap retraction boundary")]
+    if 3 in whiches:
+        handles.append(Line2D([], [], color="tab:red", lw=1.6, label="gap approach boundary"))
+    if 4 in whiches:
+        handles.append(Line2D([], [], color="tab:red", lw=1.6, ls="--",
+                              label="gap retraction boundary"))
     kinds = sorted({p.kind for p in getattr(amap, "special", [])})
     handles += [Line2D([], [], ls="none", marker=markers[k][0], mfc=markers[k][1],
                        mec=markers[k][1], label={"meet": "boundaries meet",
