@@ -512,9 +512,14 @@ contains
       character(len=400), allocatable :: notes(:)
       character(len=*), parameter :: ends(0:3) = [character(len=24) :: "grid edge", &
          "inside (meets/turns)", "leaves the mu range", "load path fails"]
-      integer :: status, c, i, k
+      integer :: status, c, i, k, control
       logical :: seen
 
+      control = map_control_load
+      if (allocated(opts%control)) then
+         if (opts%control == "gap") control = map_control_gap
+         if (opts%control == "both") control = map_control_both
+      end if
       alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(i - 1, wp)/199.0_wp), i = 1, 200)]
       mu = [1.0e-3_wp, 1.0e3_wp]
       if (allocated(opts%alpha)) alpha = opts%alpha
@@ -525,7 +530,7 @@ contains
       if (size(mu) < 2) call usage_error("map: --mu-range needs N >= 2")
       msg = ""
       call adhesion_map(opts%model, alpha, mu(1), mu(size(mu)), max(size(mu), 60), map, &
-         status, msg)
+         status, msg, control=control)
       if (status == wa_invalid_argument) call usage_error("map: "//trim(msg))
       if (status /= wa_ok) call numerical_error(status, msg)
       allocate (notes(0))
@@ -539,8 +544,13 @@ contains
       end do
       notes = [character(len=400) :: notes, &
          "boundary code = 100*which + 10*(mechanism below) + (mechanism above) in mu;", &
-         "which 1 full contact, 2 pull-off; mechanism 0 gradual, 1 jump case 1, 2 jump "// &
-         "case 2, 3 snap at P=0", "each point located to 2e-9 relative in mu"]
+         "which 1 full contact, 2 pull-off (load control): mechanism 0 gradual, 1 jump "// &
+         "case 1, 2 jump case 2, 3 snap at P=0;", &
+         "which 3 approach, 4 retraction (gap control, --control gap|both): mechanism "// &
+         "1 (flag) contact made/lost by a jump,", &
+         "  2 (flag) jump(s) between states with contact (approach: at gbar* minima; "// &
+         "retraction: before contact is lost)", &
+         "each point located to 2e-9 relative in mu"]
       do c = 1, map%n_boundaries
          associate (b => map%boundary(c))
             notes = [character(len=400) :: notes, "curve "//int_text(c)//" ("// &
@@ -690,7 +700,7 @@ contains
 
    subroutine print_help()
       integer :: i
-      character(len=100), parameter :: text(50) = [character(len=100) :: &
+      character(len=100), parameter :: text(52) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
@@ -712,7 +722,9 @@ contains
          "            --mu-range LO:HI:N[:log] (--control gap: those of mean-gap control)", &
          "  map       adhesion map (dw, md): boundaries between mechanisms as rows", &
          "            'boundary alpha mu' (--alpha-range, default 0.01:10:200:log;", &
-         "            --mu-range, default 1e-3:1e3:60:log)", &
+         "            --mu-range, default 1e-3:1e3:60:log); --control gap|both: the", &
+         "            boundaries under mean-gap control (codes 3xx approach, 4xx", &
+         "            retraction) instead of / with the load-control ones", &
          "", &
          "Options:", &
          "  --model M          westergaard | jkr | dw | md (default dw)", &
@@ -727,7 +739,7 @@ contains
          "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
          "                     Dugdale zone half-width of a state without contact)", &
          "  --n N              profile: number of points, in [2, 100000] (default 201)", &
-         "  --control C        load (default) | gap (path, critical)", &
+         "  --control C        load (default) | gap (path, critical, map) | both (map)", &
          "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default, # comments + numeric rows) | csv", &
          "  --output FILE      write the table to FILE instead of standard output; FILE is", &

@@ -129,8 +129,10 @@ contains
       else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then
          error = "gaplaw needs --gbar-range LO:HI:N"
       else if (given(opts, "--control") .and. opts%command /= "path" .and. &
-         opts%command /= "critical") then
-         error = "--control is only for the path and critical subcommands"
+         opts%command /= "critical" .and. opts%command /= "map") then
+         error = "--control is only for the path, critical and map subcommands"
+      else if (given(opts, "--control") .and. opts%command /= "map") then
+         if (opts%control == "both") error = "--control both is only for the map subcommand"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
@@ -194,8 +196,8 @@ contains
          call parse_mu_range(val, opts%gbar, error)
          if (allocated(error)) error = "--gbar-range"//error(len("--mu-range") + 1:)
       case ("--control")
-         if (val /= "load" .and. val /= "gap") then
-            error = "--control: '"//val//"' is not one of load, gap"
+         if (val /= "load" .and. val /= "gap" .and. val /= "both") then
+            error = "--control: '"//val//"' is not one of load, gap, both (map)"
          else
             opts%control = val
          end if

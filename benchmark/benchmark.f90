@@ -16,12 +16,12 @@ program benchmark
          write (*, '(a)') "usage: wavyadhesion-benchmark [--help | --version | SECTION...]", &
             "Times DW and MD points, branches, critical forces, gap control and the adhesion", &
             "map against the SPEC 9 and issue targets (single core, medians over repeats) and", &
-            "prints the figures. SECTION (default all): point branch grid critical gap map."
+            "prints the figures. SECTION (default all): point branch grid critical gap map gapmap."
          stop
       case ("--version")
          write (*, '(a)') "wavyadhesion-benchmark "//wa_version
          stop
-      case ("point", "branch", "grid", "critical", "gap", "map")
+      case ("point", "branch", "grid", "critical", "gap", "map", "gapmap")
          if (only == "all") only = ""
          only = trim(only)//" "//trim(arg)
       case default
@@ -67,6 +67,12 @@ program benchmark
       call bench_map(model_dw)
       call bench_map(model_md)
    end if
+   if (wanted("gapmap")) then
+      call bench_map(model_dw, map_control_gap)
+      call bench_map(model_dw, map_control_both)
+      call bench_map(model_md, map_control_gap)
+      call bench_map(model_md, map_control_both)
+   end if
 
 contains
 
@@ -76,24 +82,29 @@ contains
    end function wanted
 
    !> The adhesion map: 200 log alpha in [0.01, 10], mu in [1e-3, 1e3] (issue 13 targets:
-   !> DW <= 2 s, MD <= 20 s). One run: the map is deterministic.
-   subroutine bench_map(model)
+   !> DW <= 2 s, MD <= 20 s). One run: the map is deterministic. control (default load):
+   !> map_control_gap, map_control_both time the gap-control boundaries (opt-in).
+   subroutine bench_map(model, control)
       integer, intent(in) :: model
+      integer, intent(in), optional :: control
       type(map_type) :: map
       real(wp) :: alpha(200), t0, t, c0, c1
-      integer :: j, status, n_points
+      integer :: j, status, n_points, ctl
+      character(len=*), parameter :: ctl_name(3) = [character(len=5) :: "load", "gap", "both"]
+      ctl = map_control_load
+      if (present(control)) ctl = control
       alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(j - 1, wp)/199.0_wp), j = 1, 200)]
       t0 = seconds()
       call cpu_time(c0)
-      call adhesion_map(model, alpha, 1.0e-3_wp, 1.0e3_wp, 60, map, status)
+      call adhesion_map(model, alpha, 1.0e-3_wp, 1.0e3_wp, 60, map, status, control=ctl)
       call cpu_time(c1)
       t = seconds() - t0
       n_points = 0
       do j = 1, map%n_boundaries
          n_points = n_points + map%boundary(j)%n
       end do
-      write (*, '(a,a,a,f8.3,a,f8.3,a,i0,a,i0,a,i0,a,i0)') "map ", name(model), &
-         " 200 alpha (0.01..10) x mu 1e-3..1e3: ", t, " s wall, ", c1 - c0, " s CPU  (", &
+      write (*, '(a,a,a,a,a,f8.3,a,f8.3,a,i0,a,i0,a,i0,a,i0)') "map ", name(model), &
+         " control ", trim(ctl_name(ctl)), " 200 alpha (0.01..10) x mu 1e-3..1e3: ", t, " s wall, ", c1 - c0, " s CPU  (", &
          map%n_boundaries, " curves, ", n_points, " points, ", map%n_paths, &
          " load paths)  status ", status
    end subroutine bench_map

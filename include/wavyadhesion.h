@@ -296,6 +296,22 @@ int wa_adhesion_map(int model, int n_alpha, const double *alpha, double mu_lo, d
                     int capacity, int *boundary_code, double *alpha_out, double *mu_out,
                     int *n_out);
 
+/* wa_adhesion_map with a choice of boundaries: control WA_MAP_CONTROL_LOAD (as
+   wa_adhesion_map), WA_MAP_CONTROL_GAP (gap control only: which 3 approach, 4 retraction,
+   mechanisms sums of WA_GAP_MECH_JUMP_CONTACT (contact made / lost by a jump) and
+   WA_GAP_MECH_INNER_JUMPS (jumps between states with contact), e.g. 401 gap retraction:
+   gradual -> jump-out, 323 gap approach: gradual+inner jumps -> jump-in+inner jumps) or
+   WA_MAP_CONTROL_BOTH. Another control: WA_INVALID_ARGUMENT. Gap control costs about as
+   much again as load control for DW and 5-10 times as much for MD. */
+#define WA_MAP_CONTROL_LOAD 1
+#define WA_MAP_CONTROL_GAP 2
+#define WA_MAP_CONTROL_BOTH 3
+#define WA_GAP_MECH_JUMP_CONTACT 1
+#define WA_GAP_MECH_INNER_JUMPS 2
+int wa_adhesion_map_control(int model, int control, int n_alpha, const double *alpha,
+                            double mu_lo, double mu_hi, int capacity, int *boundary_code,
+                            double *alpha_out, double *mu_out, int *n_out);
+
 /* Gap (mean-gap) control (doc/c-api.md, "Gap control"): approach from far apart to full
    contact and retraction back, with gbar* imposed; jumps keep gbar*. */
 

@@ -20,7 +20,7 @@ module wa_capi
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep
    use wa_release, only: wa_version
-   use wa_map, only: map_type, adhesion_map
+   use wa_map, only: map_type, adhesion_map, map_control_load
    use wa_gappath, only: gap_path_type, gap_path, gap_law
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_values, &
       gap_critical_count
@@ -33,7 +33,7 @@ module wa_capi
       capi_critical_forces_msg, capi_load_path, capi_load_path_msg, capi_critical_sweep, &
       capi_critical_sweep_msg, capi_critical_sweep_status
    public :: capi_version
-   public :: capi_adhesion_map
+   public :: capi_adhesion_map, capi_adhesion_map_control
    public :: capi_profile, capi_profile_msg, capi_equilibrium_gap, capi_equilibrium_gap_msg, &
       capi_roots_gap, capi_roots_gap_msg, capi_trace_branch_gap, capi_trace_branch_gap_msg
    public :: capi_gap_path, capi_gap_path_msg, capi_gap_law, capi_gap_law_msg, &
@@ -1373,8 +1373,25 @@ contains
    !> not NULL) and the arrays are not written.
    function capi_adhesion_map(model, n_alpha, alpha, mu_lo, mu_hi, capacity, boundary_code, &
          alpha_out, mu_out, n_out) result(status) bind(C, name="wa_adhesion_map")
+      integer(c_int), value, intent(in) :: model, n_alpha, capacity
+      type(c_ptr), value, intent(in) :: alpha, boundary_code, alpha_out, mu_out, n_out
+      real(c_double), value, intent(in) :: mu_lo, mu_hi
+      integer(c_int) :: status
+      status = capi_adhesion_map_control(model, int(map_control_load, c_int), n_alpha, alpha, &
+         mu_lo, mu_hi, capacity, boundary_code, alpha_out, mu_out, n_out)
+   end function capi_adhesion_map
+
+   !> int wa_adhesion_map_control(model, control, n_alpha, alpha[], mu_lo, mu_hi, capacity,
+   !> boundary_code[], alpha_out[], mu_out[], *n_out): wa_adhesion_map with the boundaries
+   !> of control WA_MAP_CONTROL_LOAD (1: codes 1xx, 2xx), WA_MAP_CONTROL_GAP (2: gap
+   !> control, codes 3xx approach, 4xx retraction) or WA_MAP_CONTROL_BOTH (3).
+   function capi_adhesion_map_control(model, control, n_alpha, alpha, mu_lo, mu_hi, capacity, &
+         boundary_code, alpha_out, mu_out, n_out) result(status) &
+         bind(C, name="wa_adhesion_map_control")
       !> WA_MODEL_DW or WA_MODEL_MD
       integer(c_int), value, intent(in) :: model
+      !> WA_MAP_CONTROL_LOAD, WA_MAP_CONTROL_GAP or WA_MAP_CONTROL_BOTH
+      integer(c_int), value, intent(in) :: control
       !> Number of alpha values, >= 1
       integer(c_int), value, intent(in) :: n_alpha
       !> const double[n_alpha]: strictly increasing alpha values
@@ -1407,7 +1424,8 @@ contains
       if (capacity > 0 .and. .not. (c_associated(boundary_code) .and. &
          c_associated(alpha_out) .and. c_associated(mu_out))) return
       call c_f_pointer(alpha, a_in, [n_alpha])
-      call adhesion_map(int(model), a_in, mu_lo, mu_hi, 60, map, stat, msg)
+      call adhesion_map(int(model), a_in, mu_lo, mu_hi, 60, map, stat, msg, &
+         control=int(control))
       status = int(stat, c_int)
       if (stat /= wa_ok) return
       if (capacity > 0) then
@@ -1427,7 +1445,7 @@ contains
       end do
       n_ptr = int(n, c_int)
       if (n > capacity) status = int(wa_capacity_too_small, c_int)
-   end function capi_adhesion_map
+   end function capi_adhesion_map_control
 
    ! ------------------------------------------------------------ gap control
 

@@ -24,6 +24,7 @@ module wa_map
    use wa_curve, only: curve_residual, curve_y_max
    use wa_loadpath, only: path_type, path_from_branch, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap, a_point_pull_off
+   use wa_gapmech, only: gap_mechanisms_from_branch, gap_start_indicator, gap_mechanism_name
    implicit none
    private
 
@@ -31,6 +32,12 @@ module wa_map
    public :: map_end_grid, map_end_inside, map_end_mu_range, map_end_failed
    public :: map_point, special_meaning, map_point_meet, map_point_turn, map_point_end, &
       map_point_fail
+   public :: map_control_load, map_control_gap, map_control_both
+
+   !> What the map locates (adhesion_map's `control`): the load-control boundaries (which 1
+   !> full contact, 2 pull-off), the gap-control ones (which 3 approach, 4 retraction:
+   !> wa_gapmech), or both
+   integer, parameter :: map_control_load = 1, map_control_gap = 2, map_control_both = 3
 
    !> How a boundary curve starts or ends: at the first/last alpha of the grid; inside the
    !> grid (it meets another boundary, or the region it bounds closes: located to 1e-6
@@ -42,11 +49,13 @@ module wa_map
    real(wp), parameter :: tol_t = 2.0e-9_wp
    !> Relative accuracy in alpha of a located start or end of a curve
    real(wp), parameter :: tol_alpha = 1.0e-6_wp
-   !> Bound on the curves of one map
-   integer, parameter :: max_boundaries = 64
+   !> Bound on the curves of one map, and on those of load control (which 1, 2) and of gap
+   !> control (3, 4) each: a tangle of one control does not crowd out the other
+   integer, parameter :: max_boundaries = 128, max_per_control = 64
 
    !> One boundary curve: code = 100*which + 10*mech_below + mech_above (which: 1 full
-   !> contact, 2 pull-off; mech_*: mechanism_* codes just below / above the curve in mu).
+   !> contact, 2 pull-off, 3 gap approach, 4 gap retraction; mech_*: mechanism_* codes
+   !> (which 1, 2) or wa_gapmech's codes (3, 4) just below / above the curve in mu).
    type :: map_boundary
       integer :: code = 0, which = 0, mech_below = -1, mech_above = -1
       integer :: n = 0
@@ -74,10 +83,15 @@ module wa_map
    !> The map: the grids, the mechanisms in every cell, the boundary curves.
    type :: map_type
       integer :: model = 0
+      !> map_control_* (which boundaries and regions are computed)
+      integer :: control = map_control_load
       real(wp), allocatable :: alpha(:), mu(:)
       !> Full-contact and pull-off mechanism at (mu(i), alpha(j)); -1 where the load path
       !> fails on a scanned alpha
       integer, allocatable :: fc_region(:, :), pf_region(:, :)
+      !> Gap approach and retraction mechanism (wa_gapmech) at (mu(i), alpha(j)); -1 where
+      !> the cycle fails or the map does not compute gap control
+      integer, allocatable :: ga_region(:, :), gr_region(:, :)
       integer :: n_boundaries = 0
       type(map_boundary), allocatable :: boundary(:)
       !> Load paths computed (the cost of the map)
@@ -91,7 +105,9 @@ module wa_map
    !> order decides them (NaN where absent).
    type :: probe_type
       integer :: status = wa_ok
-      integer :: mech(2) = -1
+      !> Full contact, pull-off (load control), approach, retraction (gap control); -1
+      !> where not computed
+      integer :: mech(4) = -1
       !> Full contact: 0 P* at a* -> 1/2, 1/2 largest maximum on case 1 / case 2, 3 zero
       real(wp) :: v_fc(0:3) = 0.0_wp
       !> Pull-off: 0 P* at a* -> 0, 1/2 lowest minimum on case 1 / case 2
@@ -102,15 +118,19 @@ module wa_map
       !> ln(a* of the pull-off / a_point_pull_off) where contact is lost at a minimum
       !> (gradual <-> jump where the minimum passes a_point_pull_off)
       real(wp) :: ln_a_pf = 0.0_wp
+      !> gap_start_indicator: changes sign where a maximum of gbar* is born at the a* -> 0
+      !> end of the contact curve (DW retraction: gradual <-> jump-out)
+      real(wp) :: g_start = 0.0_wp
    end type probe_type
 
    !> The indicators a boundary can be followed by (the first whose signs differ across
    !> a located bracket is used for the next point's secant)
-   integer, parameter :: ind_none = 0, ind_loads = 1, ind_f_start = 2, ind_a_pf = 3
+   integer, parameter :: ind_none = 0, ind_loads = 1, ind_f_start = 2, ind_a_pf = 3, &
+      ind_g_start = 4
 
    !> What continuing a curve needs (fixed for one map).
    type :: tracker_type
-      integer :: model = 0, which = 0, ma = -1, mb = -1
+      integer :: model = 0, which = 0, ma = -1, mb = -1, control = map_control_load
       real(wp) :: t_min = 0.0_wp, t_max = 0.0_wp
       integer :: n_paths = 0
       !> d(indicator)/d(ln mu) at the last point located (0: not known): the first step
@@ -139,27 +159,39 @@ contains
       which = code/100
       lo = mod(code/10, 10)
       hi = mod(code, 10)
-      if (which < 1 .or. which > 2 .or. lo > 3 .or. hi > 3 .or. lo == hi) then
+      if (which < 1 .or. which > 4 .or. lo > 3 .or. hi > 3 .or. lo == hi .or. code < 0) then
          text = "unknown"
          return
       end if
-      text = merge("full contact: ", "pull-off:     ", which == 1)
-      text = trim(text)//" "//trim(names(lo))//" -> "//trim(names(hi))
+      select case (which)
+      case (1)
+         text = "full contact: "//trim(names(lo))//" -> "//trim(names(hi))
+      case (2)
+         text = "pull-off: "//trim(names(lo))//" -> "//trim(names(hi))
+      case (3)
+         text = "gap approach: "//gap_mechanism_name(3, lo)//" -> "//gap_mechanism_name(3, hi)
+      case default
+         text = "gap retraction: "//gap_mechanism_name(4, lo)//" -> "// &
+            gap_mechanism_name(4, hi)
+      end select
    end function boundary_meaning
 
    !> Build the map of `model` (model_dw or model_md) over the increasing grid alpha(:)
    !> and n_mu log-spaced mu in [mu_lo, mu_hi]. scan_every (default 20): the coarse mu scan
    !> that discovers boundaries runs at every scan_every-th alpha (and the last).
+   !> control (default map_control_load): map_control_gap for the gap-control boundaries
+   !> (approach, retraction: codes 3xx, 4xx) only, map_control_both for all.
    !> status: wa_invalid_argument for bad input (errmsg names it), else wa_ok; boundaries
    !> that cannot be continued end with end_kind = map_end_failed, never with a wrong point.
-   subroutine adhesion_map(model, alpha, mu_lo, mu_hi, n_mu, map, status, errmsg, scan_every)
+   subroutine adhesion_map(model, alpha, mu_lo, mu_hi, n_mu, map, status, errmsg, scan_every, &
+         control)
       integer, intent(in) :: model
       real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
       integer, intent(in) :: n_mu
       type(map_type), intent(out) :: map
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      integer, intent(in), optional :: scan_every
+      integer, intent(in), optional :: scan_every, control
       integer :: every, j, na
 
       call check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)
@@ -171,14 +203,24 @@ contains
             status, errmsg)
          return
       end if
+      map%control = map_control_load
+      if (present(control)) map%control = control
+      if (map%control < map_control_load .or. map%control > map_control_both) then
+         call set_error(wa_invalid_argument, "adhesion_map: control must be 1 (load), "// &
+            "2 (gap) or 3 (both)", status, errmsg)
+         return
+      end if
       na = size(alpha)
       map%model = model
       map%alpha = alpha
       map%mu = [(exp(log(mu_lo) + (log(mu_hi) - log(mu_lo))*real(j - 1, wp)/ &
          real(n_mu - 1, wp)), j = 1, n_mu)]
       allocate (map%fc_region(n_mu, na), map%pf_region(n_mu, na), map%boundary(0))
+      allocate (map%ga_region(n_mu, na), map%gr_region(n_mu, na))
       map%fc_region = -1
       map%pf_region = -1
+      map%ga_region = -1
+      map%gr_region = -1
       do j = 1, na
          if (mod(j - 1, every) /= 0 .and. j /= na) cycle
          call scan_alpha(map, j)
@@ -362,17 +404,19 @@ contains
       type(map_type), intent(inout) :: map
       integer, intent(in) :: j
       type(probe_type) :: pr
-      integer :: i, k, which, nm
+      integer :: i, nm
       integer, allocatable :: mech(:, :)
       nm = size(map%mu)
-      allocate (mech(2, nm))
+      allocate (mech(4, nm))
       do i = 1, nm
-         call probe(map%model, map%alpha(j), log(map%mu(i)), pr)
+         call probe(map%model, map%alpha(j), log(map%mu(i)), pr, map%control)
          map%n_paths = map%n_paths + 1
          mech(:, i) = pr%mech
       end do
       map%fc_region(:, j) = mech(1, :)
       map%pf_region(:, j) = mech(2, :)
+      map%ga_region(:, j) = mech(3, :)
+      map%gr_region(:, j) = mech(4, :)
       call start_curves(map, j, log(map%mu), mech)
    end subroutine scan_alpha
 
@@ -383,15 +427,18 @@ contains
       integer, intent(in) :: j
       real(wp), intent(in) :: t(:)
       integer, intent(in) :: mech(:, :)
-      integer :: i, k, which
-      i = first_good(mech(1, :), 0)
+      integer :: i, k, which, c
+      i = first_good(maxval(mech, dim=1), 0)
       do while (i > 0)
-         k = first_good(mech(1, :), i)
+         k = first_good(maxval(mech, dim=1), i)
          if (k == 0) exit
-         do which = 1, 2
+         do which = 1, 4
             if (mech(which, i) == mech(which, k)) cycle
+            if (mech(which, i) < 0 .or. mech(which, k) < 0) cycle
             if (known(map, j, which, mech(which, i), mech(which, k), exp(t(i)), exp(t(k)))) cycle
             if (map%n_boundaries >= max_boundaries) return
+            if (count([(map%boundary(c)%which > 2 .eqv. which > 2, c=1, map%n_boundaries)]) &
+               >= max_per_control) cycle
             call new_curve(map, j, which, mech(which, i), mech(which, k), t(i), t(k))
          end do
          i = k
@@ -407,13 +454,13 @@ contains
       integer, parameter :: n = 24
       type(probe_type) :: pr
       real(wp) :: t(n), lo, hi
-      integer :: mech(2, n), i
+      integer :: mech(4, n), i
       lo = max(t_c - w, log(map%mu(1)))
       hi = min(t_c + w, log(map%mu(size(map%mu))))
       if (.not. hi > lo) return
       do i = 1, n
          t(i) = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
-         call probe(map%model, map%alpha(j), t(i), pr)
+         call probe(map%model, map%alpha(j), t(i), pr, map%control)
          mech(:, i) = pr%mech
       end do
       map%n_paths = map%n_paths + n
@@ -469,13 +516,14 @@ contains
       integer :: stat, m_hi, k_fwd, k_bwd
 
       tr%model = map%model
+      tr%control = map%control
       tr%which = which
       tr%ma = ma
       tr%mb = mb
       tr%t_min = log(map%mu(1))
       tr%t_max = log(map%mu(size(map%mu)))
-      call probe(map%model, map%alpha(j), t_a, pa)
-      call probe(map%model, map%alpha(j), t_b, pb)
+      call probe(map%model, map%alpha(j), t_a, pa, map%control)
+      call probe(map%model, map%alpha(j), t_b, pb, map%control)
       tr%n_paths = 2
       call refine(tr, map%alpha(j), t_a, pa, t_b, pb, t, m_hi, stat)
       if (stat /= wa_ok .or. m_hi /= mb) then        ! a third mechanism inside: skip
@@ -669,8 +717,7 @@ contains
          kind = map_end_inside
       end if
       t0 = t_pred
-      call probe(tr%model, alpha, t0, p0)
-      tr%n_paths = tr%n_paths + 1
+      call probe_near(tr, alpha, t0, p0)
       if (p0%status /= wa_ok) then
          kind = map_end_failed
          return
@@ -681,8 +728,7 @@ contains
       d = delta
       do tries = 1, 12
          t1 = t0 + dir*d
-         call probe(tr%model, alpha, t1, p1)
-         tr%n_paths = tr%n_paths + 1
+         call probe_near(tr, alpha, t1, p1)
          if (p1%status /= wa_ok) then
             kind = map_end_failed
             return
@@ -715,6 +761,27 @@ contains
          if (t < tr%t_min .or. t > tr%t_max) kind = map_end_mu_range
       end if
    end subroutine locate
+
+   !> Probe at t; where the path fails there (the gap-controlled cycle can fail at isolated
+   !> mu next to a change), at t +- 1e-6, 4e-6, 1.6e-5 instead (t returns the one used).
+   subroutine probe_near(tr, alpha, t, p)
+      type(tracker_type), intent(inout) :: tr
+      real(wp), intent(in) :: alpha
+      real(wp), intent(inout) :: t
+      type(probe_type), intent(out) :: p
+      real(wp), parameter :: offsets(7) = [0.0_wp, 1.0e-6_wp, -1.0e-6_wp, 4.0e-6_wp, &
+         -4.0e-6_wp, 1.6e-5_wp, -1.6e-5_wp]
+      integer :: k
+      do k = 1, size(offsets)
+         call probe(tr%model, alpha, t + offsets(k), p, tr%control)
+         tr%n_paths = tr%n_paths + 1
+         if (p%status == wa_ok) then
+            t = t + offsets(k)
+            return
+         end if
+         if (tr%control == map_control_load) return     ! the load path: no retries
+      end do
+   end subroutine probe_near
 
    pure logical function optval(flag)
       logical, intent(in), optional :: flag
@@ -802,7 +869,7 @@ contains
       logical function sample(xs)
          real(wp), intent(in) :: xs
          sample = .false.
-         call probe(tr%model, alpha, xs, px)
+         call probe(tr%model, alpha, xs, px, tr%control)
          tr%n_paths = tr%n_paths + 1
          n_probes = n_probes + 1
          ts(n_probes) = xs
@@ -852,8 +919,11 @@ contains
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp), intent(out) :: t
       integer, intent(out) :: m_hi, status
-      real(wp), parameter :: fallback(6) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
-         0.0625_wp]
+      !> Where a trial point fails, others of the bracket (the gap-controlled cycle can fail
+      !> at isolated mu next to a change: wa_gappath's point solves at a gbar* pair's birth)
+      real(wp), parameter :: fallback(15) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
+         0.0625_wp, 0.375_wp, 0.625_wp, 0.9375_wp, 0.3125_wp, 0.6875_wp, 0.1875_wp, &
+         0.8125_wp, 0.4375_wp, 0.5625_wp]
       integer, parameter :: max_hist = 64
       type(probe_type) :: px, ps(max_hist)
       real(wp) :: t_lo, t_hi, hx(2), hg(2), x, g, w_old(2), ts(max_hist)
@@ -888,7 +958,7 @@ contains
          end if
          x = min(max(x, t_lo + 0.45_wp*tol), t_hi - 0.45_wp*tol)
          do k = 1, size(fallback)
-            call probe(tr%model, alpha, x, px)
+            call probe(tr%model, alpha, x, px, tr%control)
             tr%n_paths = tr%n_paths + 1
             if (px%status == wa_ok) exit
             x = t_lo + fallback(k)*(t_hi - t_lo)
@@ -944,9 +1014,13 @@ contains
          indicator_of = load_indicator(tr, p)
       case (ind_f_start)
          indicator_of = p%f_start
+         if (tr%which > 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       case (ind_a_pf)
          indicator_of = p%ln_a_pf
          if (tr%which /= 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
+      case (ind_g_start)
+         indicator_of = p%g_start
+         if (tr%which /= 4) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       case default
          indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       end select
@@ -959,7 +1033,7 @@ contains
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp) :: g_lo, g_hi
       integer :: ind
-      do ind = ind_loads, ind_a_pf
+      do ind = ind_loads, ind_g_start
          g_lo = indicator_of(tr, ind, p_lo)
          g_hi = indicator_of(tr, ind, p_hi)
          if (ieee_is_finite(g_lo) .and. ieee_is_finite(g_hi) .and. &
@@ -1017,7 +1091,9 @@ contains
       type(tracker_type), intent(in) :: tr
       type(probe_type), intent(in) :: p
       integer :: k
-      if (tr%which == 1) then
+      if (tr%which > 2) then                ! gap control: no loads decide it
+         load_indicator = ieee_value(1.0_wp, ieee_quiet_nan)
+      else if (tr%which == 1) then
          if (tr%ma == mechanism_snap .or. tr%mb == mechanism_snap) then
             load_indicator = -huge(1.0_wp)
             do k = 0, 2
@@ -1031,10 +1107,11 @@ contains
       end if
    end function load_indicator
 
-   !> Trace the branch at (alpha, exp(t)), follow the load path, keep the mechanisms and
-   !> the competing loads.
-   subroutine probe(model, alpha, t, p)
-      integer, intent(in) :: model
+   !> Trace the branch at (alpha, exp(t)), follow the load path (control: map_control_*),
+   !> keep the mechanisms and the competing loads; under gap control classify the
+   !> gap-controlled cycle (wa_gapmech).
+   subroutine probe(model, alpha, t, p, control)
+      integer, intent(in) :: model, control
       real(wp), intent(in) :: alpha, t
       type(probe_type), intent(out) :: p
       type(params_type) :: params
@@ -1051,13 +1128,27 @@ contains
       p%v_pf = nan
       p%f_start = nan
       p%ln_a_pf = nan
+      p%g_start = nan
       call new_params(alpha, exp(t), params, p%status, msg)
       if (p%status /= wa_ok) return
       call trace_branch(model, params, br, p%status, msg)
       if (p%status /= wa_ok) return
+      if (iand(control, map_control_gap) /= 0) then
+         call gap_mechanisms_from_branch(model, params, br, p%mech(3), p%mech(4), p%status, &
+            msg)
+         if (p%status /= wa_ok) then
+            p%mech = -1
+            return
+         end if
+         call gap_start_indicator(model, params, br, p%g_start)
+      end if
+      if (iand(control, map_control_load) == 0) return
       call path_from_branch(model, params, br, path, p%status, msg, mechanisms_only=.true.)
-      if (p%status /= wa_ok) return
-      p%mech = [path%fc_mechanism, path%pf_mechanism]
+      if (p%status /= wa_ok) then
+         p%mech = -1
+         return
+      end if
+      p%mech(1:2) = [path%fc_mechanism, path%pf_mechanism]
       p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
       do i = path%n, 1, -1
          if (path%event(i) /= event_pull_off) cycle
@@ -1092,14 +1183,15 @@ contains
    subroutine fill_regions(map)
       type(map_type), intent(inout) :: map
       type(probe_type) :: pr
-      real(wp) :: mu_b(64)
-      integer :: to(64), j, which, c, p, nb, i, m, k, order(64)
+      real(wp) :: mu_b(max_boundaries)
+      integer :: to(max_boundaries), j, which, c, p, nb, i, m, k, order(max_boundaries)
       do j = 1, size(map%alpha)
-         if (any(map%fc_region(:, j) /= -1)) cycle          ! scanned
-         call probe(map%model, map%alpha(j), log(map%mu(1)), pr)
+         if (any(map%fc_region(:, j) /= -1) .or. any(map%ga_region(:, j) /= -1)) cycle
+         call probe(map%model, map%alpha(j), log(map%mu(1)), pr, map%control)   ! not scanned
          map%n_paths = map%n_paths + 1
          if (pr%status /= wa_ok) cycle
-         do which = 1, 2
+         do which = 1, 4
+            if (pr%mech(which) < 0) cycle
             nb = 0
             do c = 1, map%n_boundaries
                associate (b => map%boundary(c))
@@ -1122,8 +1214,16 @@ contains
                   m = to(order(k))
                   k = k + 1
                end do
-               if (which == 1) map%fc_region(i, j) = m
-               if (which == 2) map%pf_region(i, j) = m
+               select case (which)
+               case (1)
+                  map%fc_region(i, j) = m
+               case (2)
+                  map%pf_region(i, j) = m
+               case (3)
+                  map%ga_region(i, j) = m
+               case default
+                  map%gr_region(i, j) = m
+               end select
             end do
          end do
       end do

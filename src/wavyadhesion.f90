@@ -34,6 +34,8 @@ module wavyadhesion
       gap_event_interaction_lost, load_jump_energies
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
       gap_critical_values, gap_critical_count, gap_critical_names
+   use wa_map, only: map_control_load, map_control_gap, map_control_both
+   use wa_gapmech, only: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
    implicit none
    private
 
@@ -72,5 +74,7 @@ module wavyadhesion
    public :: wa_version
    public :: gap_critical_type, gap_critical, gap_critical_sweep, gap_critical_values, &
       gap_critical_count, gap_critical_names
+   public :: map_control_load, map_control_gap, map_control_both
+   public :: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
 
 end module wavyadhesion

@@ -30,11 +30,14 @@ if __name__ == "__main__":
         t0 = time.perf_counter()
         with ThreadPoolExecutor(2) as pool, ThreadPoolExecutor(1) as side:
             # W* and the force grid share the two threads while the boundaries are
-            # continued in a thread of their own (the longest part)
+            # continued in a thread of their own (the longest part). DW: the
+            # gap-control boundary (401, red) too; MD's gap boundaries cost 5-10x its
+            # load-control map (see doc/user-guide.md): not drawn here
             energy = side.submit(wa.energy_lost, model, ENERGY_ALPHA[None, :],
                                  ENERGY_MU[:, None], errors="nan", executor=pool)
             amap = wa.adhesion_map(model, (0.01, 10.0, 60), (1e-3, 1e3, 60), forces=True,
-                                   scan_every=8, executor=pool, alpha_tol=1e-5)
+                                   scan_every=8, executor=pool, alpha_tol=1e-5,
+                                   control="both" if model == "dw" else "load")
             energy = energy.result()
         t1 = time.perf_counter()
         fig = plotting.adhesion_map(amap, energy=energy)

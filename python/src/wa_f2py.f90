@@ -610,8 +610,9 @@ end subroutine fa_critical_sweep
 !> region grids. n_out may exceed capacity (then status = wa_capacity_too_small and only
 !> capacity points are written).
 subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, scan_every, &
-      code, alpha_out, mu_out, curve, end_kinds, n_out, mu_grid, fc_region, pf_region, &
-      n_paths, status, message, special_kind, special_codes, special_point, n_special)
+      control, code, alpha_out, mu_out, curve, end_kinds, n_out, mu_grid, fc_region, &
+      pf_region, ga_region, gr_region, n_paths, status, message, special_kind, &
+      special_codes, special_point, n_special)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_map, only: map_type, adhesion_map
@@ -630,6 +631,8 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
    real(c_double), intent(in) :: mu_lo, mu_hi
    !> The discovery scan runs at every scan_every-th alpha
    integer(c_int), intent(in) :: scan_every
+   !> wa_map's map_control_*: 1 load, 2 gap, 3 both
+   integer(c_int), intent(in) :: control
    !> Boundary code, alpha, mu and curve index (from 1) of each point
    integer(c_int), intent(out) :: code(capacity)
    real(c_double), intent(out) :: alpha_out(capacity), mu_out(capacity)
@@ -641,6 +644,8 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
    !> The mu grid and the mechanisms at (mu, alpha)
    real(c_double), intent(out) :: mu_grid(n_mu)
    integer(c_int), intent(out) :: fc_region(n_mu, n_alpha), pf_region(n_mu, n_alpha)
+   !> Gap-control approach and retraction mechanisms at (mu, alpha) (-1 without control 2)
+   integer(c_int), intent(out) :: ga_region(n_mu, n_alpha), gr_region(n_mu, n_alpha)
    !> Load paths computed
    integer(c_int), intent(out) :: n_paths
    integer(c_int), intent(out) :: status
@@ -656,15 +661,17 @@ subroutine fa_adhesion_map(n_alpha, n_mu, capacity, model, alpha, mu_lo, mu_hi, 
 
    message = ""
    code = 0; alpha_out = 0; mu_out = 0; curve = 0; end_kinds = 0; mu_grid = 0
-   fc_region = -1; pf_region = -1; n_paths = 0
+   fc_region = -1; pf_region = -1; ga_region = -1; gr_region = -1; n_paths = 0
    special_kind = 0; special_codes = 0; special_point = 0; n_special = 0
    n = 0
    call adhesion_map(int(model), alpha, mu_lo, mu_hi, int(n_mu), map, stat, message, &
-      scan_every=int(scan_every))
+      scan_every=int(scan_every), control=int(control))
    if (stat == wa_ok) then
       mu_grid = map%mu
       fc_region = map%fc_region
       pf_region = map%pf_region
+      ga_region = map%ga_region
+      gr_region = map%gr_region
       n_paths = map%n_paths
       n_special = int(min(map%n_special, 128), c_int)
       do c = 1, n_special

@@ -79,3 +79,48 @@ def test_special_points():
     assert meets[0].meaning == ("full contact: gradual -> jump case 1 meets full contact: "
                                 "gradual -> snap at P=0")
     assert all(isinstance(p, wa.SpecialPoint) for p in m.special)
+
+
+@pytest.fixture(scope="module")
+def gap_map():
+    return wa.adhesion_map("dw", [0.3, 0.31], (1e-2, 1e2, 20), control="both",
+                           scan_every=1)
+
+
+def test_gap_control(gap_map):
+    """Gap control (codes 3xx, 4xx): DW has one boundary, retraction gradual -> jump-out
+    (401) at mu 2.13757 for alpha 0.3 (gap_mechanism_change; defined to ~2e-7), on top of
+    the load-control ones; the approach always jumps into contact (region 1)."""
+    m = gap_map
+    codes = {b.code for b in m.boundaries}
+    assert 401 in codes and {101, 212}.issubset(codes)
+    b = [b for b in m.boundaries if b.code == 401][0]
+    assert b.meaning == "gap retraction: gradual -> jump-out"
+    assert b.mu[b.alpha == 0.3][0] == pytest.approx(2.1375727951, rel=1e-6)
+    assert m.ga_region.shape == m.gr_region.shape == m.fc_region.shape == (20, 2)
+    assert (m.ga_region == 1).all()
+    i = np.searchsorted(m.mu, b.mu[0])
+    assert (m.gr_region[:i, 0] == 0).all() and (m.gr_region[i:, 0] == 1).all()
+    assert wa.boundary_meaning(323) == ("gap approach: gradual+inner jumps -> "
+                                        "jump-in+inner jumps")
+    # the load-control part equals the load-only map
+    load = wa.adhesion_map("dw", [0.3, 0.31], (1e-2, 1e2, 20), scan_every=1)
+    assert load.ga_region is None and load.control == "load"
+    np.testing.assert_array_equal(load.fc_region, m.fc_region)
+    for a in load.boundaries:
+        same = [g for g in m.boundaries if g.code == a.code]
+        assert same and np.array_equal(same[0].mu, a.mu)
+    with pytest.raises(wa.InvalidArgumentError, match="control"):
+        wa.adhesion_map("dw", [0.3], control="displacement")
+
+
+def test_gap_plotting():
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    matplotlib.use("Agg")
+    from wavyadhesion import plotting
+    m = wa.adhesion_map("dw", [0.3, 0.31], (1e-2, 1e2, 12), control="gap", scan_every=1)
+    fig = plotting.adhesion_map(m)
+    ax = fig.axes[0]
+    assert "gap control" in ax.get_title()
+    assert any(line.get_color() == "tab:red" for line in ax.get_lines())

@@ -23,6 +23,7 @@ Matplotlib helpers that redraw the paper's figures are in ``wavyadhesion.plottin
 """
 
 from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_meaning
+from ._map import GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._energy import EnergyLost, energy_lost
 from ._core import (
@@ -79,6 +80,8 @@ __all__ = [
     "SpecialPoint",
     "adhesion_map",
     "boundary_meaning",
+    "GAP_APPROACH_NAMES",
+    "GAP_RETRACTION_NAMES",
     "EVENTS",
     "MECHANISMS",
     "MODELS",

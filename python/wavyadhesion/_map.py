@@ -15,6 +15,12 @@ from ._parallel import run_chunks
 
 #: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
 _NAMES = ("gradual", "jump case 1", "jump case 2", "snap at P=0")
+#: Gap control (wa_gapmech): approach (which 3) and retraction (which 4) mechanisms, sums of
+#: 1 (contact made / lost by a jump) and 2 (jumps between states with contact).
+GAP_APPROACH_NAMES = ("gradual", "jump-in", "gradual+inner jumps", "jump-in+inner jumps")
+GAP_RETRACTION_NAMES = ("gradual", "jump-out", "inner jumps+gradual", "inner jumps+jump-out")
+#: The ``control`` values of :func:`adhesion_map`
+CONTROLS = {"load": 1, "gap": 2, "both": 3}
 #: How a curve starts or ends.
 END_KINDS = ("grid edge", "inside (meets another boundary or turns)", "leaves the mu range",
              "load path fails")
@@ -23,13 +29,19 @@ END_KINDS = ("grid edge", "inside (meets another boundary or turns)", "leaves th
 def boundary_meaning(code: int) -> str:
     """'full contact: gradual -> jump case 1' for code 101, and so on: code = 100*which +
     10*(mechanism below) + (mechanism above) in mu, which 1 full contact, 2 pull-off.
+    Gap control: which 3 approach, 4 retraction ('gap retraction: gradual -> jump-out'
+    for 401; mechanisms in GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES).
     Codes from 1000 (Python only, ``forces=True``): 1000 + the same, for a boundary
     crossed in alpha (mechanism left -> right as alpha grows) at fixed mu."""
     in_alpha = code >= 1000
     code = code - 1000 if in_alpha else code
     which, lo, hi = code // 100, code // 10 % 10, code % 10
-    if which not in (1, 2) or lo > 3 or hi > 3 or lo == hi:
+    if which not in (1, 2, 3, 4) or lo > 3 or hi > 3 or lo == hi or code < 0:
         return "unknown"
+    if which == 3:
+        return f"gap approach: {GAP_APPROACH_NAMES[lo]} -> {GAP_APPROACH_NAMES[hi]}"
+    if which == 4:
+        return f"gap retraction: {GAP_RETRACTION_NAMES[lo]} -> {GAP_RETRACTION_NAMES[hi]}"
     text = f"{'full contact' if which == 1 else 'pull-off'}: {_NAMES[lo]} -> {_NAMES[hi]}"
     return text + (" (as alpha grows, at fixed mu)" if in_alpha else "")
 
@@ -87,7 +99,10 @@ class AdhesionMap:
     ``fc_region`` and ``pf_region`` have shape (len(mu), len(alpha)): the full-contact and
     pull-off mechanism codes (0 gradual, 1 jump case 1, 2 jump case 2, 3 snap; -1 where
     the load path failed): computed at the scanned alpha and filled from the boundary
-    curves elsewhere, or, with ``forces=True``, computed in every cell. With ``forces=True``: ``P_fc``, ``P_pf`` on the same grid (NaN
+    curves elsewhere, or, with ``forces=True``, computed in every cell. ``ga_region``,
+    ``gr_region`` (``control`` "gap" or "both", else None): the gap-control approach and
+    retraction mechanisms (GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES; computed at the
+    scanned alpha, filled from the boundary curves elsewhere). With ``forces=True``: ``P_fc``, ``P_pf`` on the same grid (NaN
     where they failed) and the model-choice masks ``westergaard`` (both forces within
     1 %: P_fc within 1 % of 1, |P_pf| <= 0.01) and ``jkr_fc`` (P_fc within 1 % of JKR's;
     JKR's pull-off, -inf, is qualitatively wrong everywhere)."""
@@ -106,6 +121,10 @@ class AdhesionMap:
     jkr_P_fc: Optional[np.ndarray] = field(default=None, repr=False)
     #: Where boundaries meet, turn back, end or fail inside the grid (SpecialPoint)
     special: list = field(default_factory=list)
+    #: "load", "gap" or "both": which boundaries and regions were computed
+    control: str = "load"
+    ga_region: Optional[np.ndarray] = None
+    gr_region: Optional[np.ndarray] = None
 
 
 def _grid(spec, name):
@@ -185,7 +204,7 @@ def _vertical_boundaries(model, alpha, mu, regions, executor, tol=1e-9):
 
 def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60), *,
                  forces: bool = False, scan_every: int = 20, executor=None,
-                 alpha_tol: float = 1e-9) -> AdhesionMap:
+                 alpha_tol: float = 1e-9, control: str = "load") -> AdhesionMap:
     """The adhesion map of the (alpha, mu) plane for "dw" or "md".
 
     Parameters
@@ -209,6 +228,10 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     alpha_tol : float
         Relative accuracy in alpha of the boundaries crossed in alpha (``forces=True``;
         default 1e-9; a figure needs far less, e.g. 1e-5).
+    control : {"load", "gap", "both"}
+        Which boundaries: load control (codes 1xx, 2xx; default), gap control (3xx
+        approach, 4xx retraction: doc/theory.md, "Adhesion map") or both. Gap control
+        costs about as much again as load control for DW, 5-10 times more for MD.
 
     Returns
     -------
@@ -217,9 +240,13 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     Raises
     ------
     InvalidArgumentError
-        A model other than dw/md, a bad range (decreasing alpha, mu_lo >= mu_hi, ...).
+        A model other than dw/md, a bad range (decreasing alpha, mu_lo >= mu_hi, ...), a
+        control other than load/gap/both.
     """
     code = _model_code(model)
+    if control not in CONTROLS:
+        raise InvalidArgumentError(f"control = {control!r}: must be 'load', 'gap' or 'both'",
+                                   1)
     alpha = _grid(alpha_range, "alpha_range")
     if not (isinstance(mu_range, tuple) and len(mu_range) == 3):
         raise InvalidArgumentError("mu_range must be (lo, hi, n)", 1)
@@ -227,7 +254,8 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     if not 1e-15 <= float(alpha_tol) <= 0.1:
         raise InvalidArgumentError(f"alpha_tol = {alpha_tol!r}: must be in [1e-15, 0.1]", 1)
     capacity = 64 * (alpha.size + 64)
-    args = (max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi, int(scan_every))
+    args = (max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi, int(scan_every),
+            CONTROLS[control])
     pending = None
     if forces and executor is not None and n_mu >= 2 and 0 < mu_lo < mu_hi:
         # the force grid on the executor while this thread's helper continues the
@@ -244,7 +272,7 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
             pool.shutdown()
     else:
         out = _f.fa_adhesion_map(*args)
-    (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, n_paths, status,
+    (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, ga, gr, n_paths, status,
      message, sp_kind, sp_codes, sp_point, n_special) = out
     if status != _OK:
         _raise(status, message)
@@ -262,7 +290,10 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
                for k in range(int(n_special))]
     result = dict(model=str(model), alpha=alpha, mu=np.asarray(mu_grid).copy(),
                   fc_region=np.asarray(fc).copy(), pf_region=np.asarray(pf).copy(),
-                  boundaries=boundaries, n_paths=int(n_paths), special=special)
+                  boundaries=boundaries, n_paths=int(n_paths), special=special,
+                  control=control)
+    if control != "load":
+        result.update(ga_region=np.asarray(ga).copy(), gr_region=np.asarray(gr).copy())
     if forces:
         mu = result["mu"]
         if pending is not None and np.array_equal(pending[0], mu):

@@ -266,6 +266,9 @@ def _jkr_full_contact(alpha):
 
 #: Short names of the mechanisms in map labels.
 _MAP_SHORT = ("gradual", "jump c1", "jump c2", "snap")
+#: Gap control (approach, retraction): short names in map labels
+_GAP_SHORT = (("gradual", "jump-in", "grad.+inner", "jump-in+inner"),
+              ("gradual", "jump-out", "inner+grad.", "inner+jump-out"))
 
 
 #: Colour of the W* contours (distinct from the greys and black of the map's lines).
@@ -373,7 +376,10 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=Non
     solid, pull-off dashed), and, when the map holds forces (``forces=True``), the region
     where Westergaard predicts both critical forces within 1 % (hatched), the edge of the
     region where JKR's P_fc is within 1 % (thick grey line; JKR's pull-off, -inf, is
-    wrong everywhere) and contours of -P_pf (thin, labelled).
+    wrong everywhere) and contours of -P_pf (thin, labelled). Gap-control boundaries
+    (maps with ``control`` "gap" or "both") are drawn in red (approach solid, retraction
+    dashed); a map with ``control="gap"`` is shaded by its gap regions (AP = how contact
+    is made on the approach, RE = how it is lost on the retraction).
 
     ``energy``: an :func:`~wavyadhesion.energy_lost` result on a grid (``alpha`` of shape
     (1, n), ``mu`` of shape (m, 1), both increasing; it may cover part of the map) adds
@@ -392,8 +398,12 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=Non
     else:
         fig = ax.figure
     alpha, mu = amap.alpha, amap.mu
-    pair = np.where((amap.fc_region >= 0) & (amap.pf_region >= 0),
-                    4 * amap.pf_region + amap.fc_region, -1)
+    gap_only = getattr(amap, "control", "load") == "gap"
+    reg_a, reg_b = ((amap.ga_region, amap.gr_region) if gap_only else
+                    (amap.fc_region, amap.pf_region))
+    short_a, short_b = _GAP_SHORT if gap_only else (_MAP_SHORT, _MAP_SHORT)
+    tag_a, tag_b = ("AP", "RE") if gap_only else ("FC", "PO")
+    pair = np.where((reg_a >= 0) & (reg_b >= 0), 4 * reg_b + reg_a, -1)
     present = [int(v) for v in np.unique(pair) if v >= 0]
     index = np.full(pair.shape, np.nan)
     for k, v in enumerate(present):
@@ -421,7 +431,9 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=Non
                             linewidths=0.6, linestyles="dotted")
         ax.clabel(cs, fmt=lambda v: f"$-P_{{pf}}^*$={v:g}", fontsize=7, inline=True)
     for b in amap.boundaries:
-        ax.plot(b.alpha, b.mu, color="k", lw=1.6, ls="-" if b.code % 1000 < 200 else "--")
+        which = b.code % 1000 // 100
+        ax.plot(b.alpha, b.mu, color="k" if which < 3 else "tab:red", lw=1.6,
+                ls="-" if which in (1, 3) else "--")
     markers = {"meet": ("o", "k"), "turn": ("D", "tab:red"), "end": ("s", "tab:blue"),
                "load path fails": ("x", "tab:orange")}
     for p in getattr(amap, "special", []):
@@ -446,7 +458,7 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=Non
                     best, where = d, (i, j)
             i, j = where
             ax.text(10 ** la[j], 10 ** lm[i],
-                    f"FC {_MAP_SHORT[v % 4]}\nPO {_MAP_SHORT[v // 4]}", ha="center",
+                    f"{tag_a} {short_a[v % 4]}\n{tag_b} {short_b[v // 4]}", ha="center",
                     va="center", fontsize=8, bbox=dict(boxstyle="round,pad=0.2", fc="white",
                                                        ec="none", alpha=0.75))
     ax.set_xscale("log")
@@ -458,11 +470,21 @@ def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=Non
     ax.set_xlabel(r"$\alpha$ (adhesion vs. elasticity)")
     ax.set_ylabel(r"$\mu$ (range of adhesive stress)")
     ax.set_title(f"Adhesion map, {amap.model.upper()}: FC = how full contact is reached, "
-                 f"PO = how contact is lost", fontsize=10)
+                 f"PO = how contact is lost" if not gap_only else
+                 f"Adhesion map under gap control, {amap.model.upper()}: AP = how contact "
+                 f"is made, RE = how it is lost", fontsize=10)
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
+    whiches = {b.code % 1000 // 100 for b in amap.boundaries}
     handles = [Line2D([], [], color="k", lw=1.6, label="full-contact boundary"),
                Line2D([], [], color="k", lw=1.6, ls="--", label="pull-off boundary")]
+    if gap_only:
+        handles = []
+    if 3 in whiches:
+        handles.append(Line2D([], [], color="tab:red", lw=1.6, label="gap approach boundary"))
+    if 4 in whiches:
+        handles.append(Line2D([], [], color="tab:red", lw=1.6, ls="--",
+                              label="gap retraction boundary"))
     kinds = sorted({p.kind for p in getattr(amap, "special", [])})
     handles += [Line2D([], [], ls="none", marker=markers[k][0], mfc=markers[k][1],
                        mec=markers[k][1], label={"meet": "boundaries meet",

@@ -867,6 +867,36 @@ static void test_adhesion_map(void) {
    CHECK(st == WA_INVALID_ARGUMENT, "adhesion_map NULL n_out refused");
 }
 
+/* wa_adhesion_map_control: gap control over DW alpha 0.3, 0.31 gives only the retraction
+   boundary 401 (gradual -> jump-out), at alpha 0.3 at mu 2.13757 (where
+   gap_mechanism_change puts it; that boundary is defined to ~2e-7 relative); control 4
+   is refused; WA_MAP_CONTROL_LOAD gives what wa_adhesion_map gives. */
+static void test_adhesion_map_control(void) {
+   const double alpha[2] = {0.3, 0.31};
+   int code[256], code2[256], n = -1, n2 = -1, st, i, saw401 = 0, only_gap = 1;
+   double a[256], m[256], a2[256], m2[256];
+   st = wa_adhesion_map_control(WA_MODEL_DW, WA_MAP_CONTROL_GAP, 2, alpha, 1e-2, 1e2, 256,
+                                code, a, m, &n);
+   CHECK(st == WA_OK && n >= 2, "adhesion_map_control gap: status %d, %d points", st, n);
+   for (i = 0; i < n && i < 256; i++) {
+      if (code[i] < 300) only_gap = 0;
+      if (code[i] == 401 && a[i] == 0.3) saw401 = close_to(m[i], 2.1375727951, 1e-6);
+   }
+   CHECK(only_gap && saw401, "adhesion_map_control gap: 401 at mu 2.13757, gap codes only");
+   st = wa_adhesion_map_control(WA_MODEL_DW, 4, 2, alpha, 1e-2, 1e2, 256, code, a, m, &n);
+   CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map_control control 4 refused");
+   st = wa_adhesion_map_control(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 2, alpha, 1e-2, 1e2, 256,
+                                code, a, m, &n);
+   CHECK(st == WA_OK, "adhesion_map_control load: status %d", st);
+   st = wa_adhesion_map(WA_MODEL_DW, 2, alpha, 1e-2, 1e2, 256, code2, a2, m2, &n2);
+   CHECK(st == WA_OK && n2 == n, "adhesion_map_control load = adhesion_map (%d, %d)", n, n2);
+   for (i = 0; i < n && i < n2 && i < 256; i++)
+      if (code[i] != code2[i] || a[i] != a2[i] || m[i] != m2[i]) {
+         CHECK(0, "adhesion_map_control load differs at point %d", i);
+         break;
+      }
+}
+
 /* ---------------------------------------------------------------- separation */
 
 /* Mean over one period of f sampled at n midpoints of [-1/2, 1/2]. */
@@ -1303,6 +1333,7 @@ int main(void) {
    test_sweep_keeps_rows();
    test_branch_threads();
    test_adhesion_map();
+   test_adhesion_map_control();
    test_gap_functions();
    test_profile();
    test_gap_path();

@@ -18,7 +18,11 @@ contains
          new_unittest("codes_and_meanings", test_codes), &
          new_unittest("regions_match_boundaries", test_regions), &
          new_unittest("special_points_dw", test_special), &
-         new_unittest("invalid_arguments", test_invalid)]
+         new_unittest("invalid_arguments", test_invalid), &
+         new_unittest("dw_gap_points_equal_gap_mechanism_change_20_alpha", test_dw_gap_points), &
+         new_unittest("md_gap_points_equal_gap_mechanism_change", test_md_gap_points), &
+         new_unittest("gap_codes_and_meanings", test_gap_codes), &
+         new_unittest("gap_regions_match_boundaries", test_gap_regions)]
    end subroutine collect_map
 
    !> 20 alpha over [0.01, 10]: every boundary point on the grid, rebisected by
@@ -170,6 +174,145 @@ contains
       call adhesion_map(model_dw, [0.0_wp], 1.0e-3_wp, 1.0e3_wp, 10, map, status, msg)
       call check(error, status == wa_invalid_argument .and. index(msg, "alpha") > 0, &
          "alpha = 0 refused")
+      if (allocated(error)) return
+      call adhesion_map(model_dw, [0.3_wp], 1.0e-3_wp, 1.0e3_wp, 10, map, status, msg, &
+         control=4)
+      call check(error, status == wa_invalid_argument .and. index(msg, "control") > 0, &
+         "control = 4 refused")
    end subroutine test_invalid
+
+   !> Gap control (codes 3xx, 4xx): DW, 20 alpha over [0.01, 10], every boundary point on
+   !> the grid rebisected by gap_mechanism_change from +-1e-6 agrees to 1e-8 relative,
+   !> except where the retraction's jump-out flag changes (DW 401, MD 423): a maximum of
+   !> gbar* born at the a* -> 0 end, decided by gbar* differences of a few ulps over a band
+   !> of ~2e-7 relative in mu (doc/theory.md, "Adhesion map"): there to 5e-7.
+   subroutine test_dw_gap_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: alpha(20)
+      integer :: j
+      alpha = [(10.0_wp**(-2.0_wp + 3.0_wp*real(j - 1, wp)/19.0_wp), j = 1, 20)]
+      call check_gap_points(error, model_dw, alpha, 1.0e-3_wp, 1.0e3_wp, 5, 20, 1)
+   end subroutine test_dw_gap_points
+
+   !> MD at alpha 0.3, 1, 3 (each scanned): the four to six gap boundaries there.
+   subroutine test_md_gap_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_gap_points(error, model_md, [0.3_wp, 1.0_wp, 3.0_wp], 1.0e-2_wp, 1.0e2_wp, &
+         1, 10, 4)
+   end subroutine test_md_gap_points
+
+   subroutine check_gap_points(error, model, alpha, mu_lo, mu_hi, every, min_points, &
+         min_boundaries)
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in) :: model, every, min_points, min_boundaries
+      real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
+      type(map_type) :: map
+      real(wp) :: mu_c, worst, d, worst_out
+      character(len=200) :: text
+      integer :: status, c, p, n_checked
+      character(len=256) :: msg
+      msg = ""
+      call adhesion_map(model, alpha, mu_lo, mu_hi, 40, map, status, msg, &
+         scan_every=every, control=map_control_gap)
+      call check(error, status == wa_ok, "map: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, map%n_boundaries >= min_boundaries, "gap boundaries found")
+      if (allocated(error)) return
+      worst = 0.0_wp
+      worst_out = 0.0_wp
+      n_checked = 0
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            call check(error, b%which == 3 .or. b%which == 4, "only gap boundaries")
+            if (allocated(error)) return
+            do p = 1, b%n
+               if (.not. any(alpha == b%alpha(p))) cycle
+               call gap_mechanism_change(model, b%alpha(p), b%which, &
+                  b%mu(p)*(1.0_wp - 1.0e-6_wp), b%mu(p)*(1.0_wp + 1.0e-6_wp), mu_c, status)
+               write (text, '(a,i0,a,es24.16,a,es24.16,a,i0)') "gap_mechanism_change "// &
+                  "converges: code ", b%code, " alpha ", b%alpha(p), " mu ", b%mu(p), &
+                  " status ", status
+               call check(error, status == wa_ok, trim(text))
+               if (allocated(error)) return
+               d = abs(mu_c - b%mu(p))/b%mu(p)
+               if (b%which == 4 .and. iand(ieor(b%mech_below, b%mech_above), 1) /= 0) then
+                  worst_out = max(worst_out, d)
+               else
+                  worst = max(worst, d)
+               end if
+               n_checked = n_checked + 1
+            end do
+         end associate
+      end do
+      write (text, '(a,i0,a,es10.3,a,es10.3)') "points checked: ", n_checked, ", worst ", &
+         worst, ", jump-out flag ", worst_out
+      call check(error, worst_out <= 5.0e-7_wp, "jump-out boundary points agree to 5e-7: "// &
+         trim(text))
+      if (allocated(error)) return
+      call check(error, n_checked >= min_points, trim(text))
+      if (allocated(error)) return
+      call check(error, worst <= 1.0e-8_wp, "gap boundary points agree with "// &
+         "gap_mechanism_change: "//trim(text))
+   end subroutine check_gap_points
+
+   subroutine test_gap_codes(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check(error, boundary_meaning(401) == "gap retraction: gradual -> jump-out", &
+         "meaning of 401")
+      if (allocated(error)) return
+      call check(error, boundary_meaning(323) == "gap approach: gradual+inner jumps -> "// &
+         "jump-in+inner jumps", "meaning of 323")
+      if (allocated(error)) return
+      call check(error, boundary_meaning(302) == "gap approach: gradual -> gradual+inner "// &
+         "jumps", "meaning of 302")
+      if (allocated(error)) return
+      call check(error, boundary_meaning(344) == "unknown" .and. boundary_meaning(504) == &
+         "unknown", "unknown gap codes")
+      if (allocated(error)) return
+      call check(error, gap_mechanism_name(4, 3) == "inner jumps+jump-out", "name")
+   end subroutine test_gap_codes
+
+   !> DW at alpha 0.1, 0.2, 3 under both controls: load regions as before, and the gap
+   !> regions hold mech_below just under each gap boundary and mech_above just over it.
+   subroutine test_gap_regions(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(map_type) :: map
+      integer :: status, c, p, i, j
+      integer, allocatable :: region(:, :)
+      logical :: any_gap
+      call adhesion_map(model_dw, [0.1_wp, 0.2_wp, 3.0_wp], 1.0e-3_wp, 1.0e3_wp, 40, map, &
+         status, scan_every=2, control=map_control_both)
+      call check(error, status == wa_ok, "map")
+      if (allocated(error)) return
+      call check(error, all(map%ga_region == 1), "DW approach: always jump-in")
+      if (allocated(error)) return
+      any_gap = .false.
+      do c = 1, map%n_boundaries
+         associate (b => map%boundary(c))
+            select case (b%which)
+            case (1)
+               region = map%fc_region
+            case (2)
+               region = map%pf_region
+            case (3)
+               region = map%ga_region
+            case default
+               region = map%gr_region
+            end select
+            any_gap = any_gap .or. b%which > 2
+            do p = 1, b%n
+               do j = 1, size(map%alpha)
+                  if (map%alpha(j) /= b%alpha(p)) cycle
+                  i = count(map%mu < b%mu(p))
+                  if (i < 1 .or. i >= size(map%mu)) cycle
+                  call check(error, region(i, j) == b%mech_below .and. &
+                     region(i + 1, j) == b%mech_above, "regions on each side of a boundary")
+                  if (allocated(error)) return
+               end do
+            end do
+         end associate
+      end do
+      call check(error, any_gap, "a gap boundary (401)")
+   end subroutine test_gap_regions
 
 end module test_map

@@ -1,0 +1,248 @@
+!> Mechanisms of the gap-controlled (mean-gap) cycle, for the adhesion map (doc/theory.md,
+!> "Adhesion map", gap control): how contact is made and full contact reached on the
+!> approach, how contact is lost on the retraction. Both are read off the events of the
+!> cycle of wa_gappath (without W*, panels or landing states' energies).
+!>
+!> Approach (map `which` = 3), a sum of two flags:
+!>   1 when contact is made by a jump (a jump from a state without contact, P* = 0 far
+!>     apart or MD's Dugdale zone around the crest, that lands on a state with contact),
+!>   2 when the approach jumps from a state with contact (at a minimum of gbar*).
+!> Retraction (which = 4):
+!>   1 when contact is lost by a jump (from a maximum of gbar* on a state with contact to
+!>     a state without contact or far apart),
+!>   2 when the retraction jumps between states with contact before.
+!> Jumps between states without contact (MD's jump from far apart at the first
+!> interaction and back at the interaction lost, and any between crest-zone states) do not
+!> count: MD has them for every mu > 0 (gbar* rises as c* ln(1/c*) from the first
+!> interaction) and at small mu they are below the traced branch's resolution.
+module wa_gapmech
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, set_error
+   use wa_params, only: params_type, new_params
+   use wa_state, only: state_type, zone_no_contact
+   use wa_models, only: model_roots, max_model_roots
+   use wa_separation, only: state_mean_gap
+   use wa_branch, only: branch_type, trace_branch
+   use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
+      gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
+   implicit none
+   private
+
+   public :: gap_mechanisms, gap_mechanisms_from_branch, gap_mechanism_change, &
+      gap_start_indicator, gap_mechanism_name
+   public :: gap_flag_jump_contact, gap_flag_jumps_within
+
+   !> The flags of a gap mechanism code (see the module header)
+   integer, parameter :: gap_flag_jump_contact = 1, gap_flag_jumps_within = 2
+
+   !> The a* -> 0 end of the contact curve where wa_gappath starts its chain (DW)
+   real(wp), parameter :: a_limit = 1.0e-15_wp
+
+contains
+
+   !> "gradual", "jump-in", ... for mechanism m of the approach (which = 3) or the
+   !> retraction (which = 4).
+   pure function gap_mechanism_name(which, m) result(text)
+      integer, intent(in) :: which, m
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: app(0:3) = [character(len=20) :: "gradual", &
+         "jump-in", "gradual+inner jumps", "jump-in+inner jumps"]
+      character(len=*), parameter :: ret(0:3) = [character(len=20) :: "gradual", &
+         "jump-out", "inner jumps+gradual", "inner jumps+jump-out"]
+      if (m < 0 .or. m > 3 .or. (which /= 3 .and. which /= 4)) then
+         text = "unknown"
+      else if (which == 3) then
+         text = trim(app(m))
+      else
+         text = trim(ret(m))
+      end if
+   end function gap_mechanism_name
+
+   !> Trace the branch at (alpha, mu) and classify its gap-controlled cycle.
+   subroutine gap_mechanisms(model, params, mech_approach, mech_retraction, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      integer, intent(out) :: mech_approach, mech_retraction
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(branch_type) :: branch
+      mech_approach = -1
+      mech_retraction = -1
+      call trace_branch(model, params, branch, status, errmsg)
+      if (status /= wa_ok) return
+      call gap_mechanisms_from_branch(model, params, branch, mech_approach, &
+         mech_retraction, status, errmsg)
+   end subroutine gap_mechanisms
+
+   !> The approach and retraction mechanisms of the gap-controlled cycle on a traced branch
+   !> (-1 both when the cycle fails).
+   subroutine gap_mechanisms_from_branch(model, params, branch, mech_approach, &
+         mech_retraction, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      integer, intent(out) :: mech_approach, mech_retraction
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(gap_path_type) :: path
+      real(wp) :: p_min, g_min, a_min, g_contact
+      integer :: k
+      logical :: from_contact, to_contact
+
+      mech_approach = -1
+      mech_retraction = -1
+      call gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
+         status, errmsg)
+      if (status /= wa_ok) return
+      mech_approach = 0
+      mech_retraction = 0
+      do k = 1, path%n - 1
+         if (path%event(k) /= gap_event_jump_start .or. &
+            path%event(k + 1) /= gap_event_jump_end) cycle
+         from_contact = in_contact(k)
+         to_contact = in_contact(k + 1)
+         if (path%stage(k) == gap_stage_approach) then
+            if (.not. from_contact .and. to_contact) &
+               mech_approach = ior(mech_approach, gap_flag_jump_contact)
+            if (from_contact .and. to_contact) &
+               mech_approach = ior(mech_approach, gap_flag_jumps_within)
+         else if (path%stage(k) == gap_stage_retraction) then
+            if (from_contact .and. .not. to_contact) &
+               mech_retraction = ior(mech_retraction, gap_flag_jump_contact)
+            ! jumps within contact before contact is lost (not after a regain)
+            if (from_contact .and. to_contact .and. &
+               iand(mech_retraction, gap_flag_jump_contact) == 0) &
+               mech_retraction = ior(mech_retraction, gap_flag_jumps_within)
+         end if
+      end do
+   contains
+      pure logical function in_contact(k)
+         integer, intent(in) :: k
+         in_contact = path%a_star(k) > 0.0_wp .and. path%zone_case(k) /= zone_no_contact
+      end function in_contact
+   end subroutine gap_mechanisms_from_branch
+
+   !> A smooth quantity whose sign decides whether gbar* has a maximum next to the a* -> 0
+   !> end of the contact curve (models without states free of contact, DW): gbar* at the
+   !> branch's first point (a_start) minus gbar* at a* = 1e-15, where wa_gappath's chain
+   !> starts (positive: gbar* rises from the end, the retraction jumps out of contact from
+   !> the maximum; negative: it falls, contact is lost at a* -> 0). NaN when the chain
+   !> starts elsewhere (MD) or the state at 1e-15 is not found.
+   subroutine gap_start_indicator(model, params, branch, value)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(branch_type), intent(in) :: branch
+      real(wp), intent(out) :: value
+      type(state_type) :: roots(max_model_roots), s
+      real(wp) :: d, d_best, g
+      integer :: n, k, best, stat
+      character(len=128) :: msg
+      value = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (branch%n < 2) return
+      if (branch%zone_case(1) == zone_no_contact) return
+      msg = ""
+      call model_roots(model, params, a_limit, roots, n, stat, msg)
+      if (stat /= wa_ok) return
+      best = 0
+      d_best = huge(1.0_wp)
+      do k = 1, min(n, size(roots))
+         d = abs(roots(k)%c_star - branch%c_star(1))
+         if (d < d_best) then
+            d_best = d
+            best = k
+         end if
+      end do
+      if (best == 0) return
+      s = roots(best)
+      call state_mean_gap(model, params, s, g, stat, msg)
+      if (stat /= wa_ok .or. .not. ieee_is_finite(g)) return
+      value = branch%gbar(1) - g
+   end subroutine gap_start_indicator
+
+   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the gap
+   !> approach (which = 3) or retraction (which = 4) mechanism changes, to 1e-10 relative
+   !> (geometric bisection): the gap-control counterpart of mechanism_change; where the
+   !> cycle fails at a trial mu, 14 other points of the bracket are tried in turn.
+   subroutine gap_mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, &
+         errmsg, bracket)
+      integer, intent(in) :: model, which
+      real(wp), intent(in) :: alpha, mu_lo, mu_hi
+      real(wp), intent(out) :: mu_change
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), intent(out), optional :: bracket(2)
+      real(wp), parameter :: tries(15) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
+         0.0625_wp, 0.9375_wp, 0.375_wp, 0.625_wp, 0.3125_wp, 0.6875_wp, 0.1875_wp, &
+         0.8125_wp, 0.4375_wp, 0.5625_wp]
+      integer, parameter :: max_steps = 200
+      character(len=256) :: msg
+      real(wp) :: lo, hi, x
+      integer :: m_lo, m_x, step, k, stat
+      logical :: done
+
+      mu_change = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (present(bracket)) bracket = mu_change
+      status = wa_ok
+      if (which /= 3 .and. which /= 4) then
+         call set_error(wa_invalid_argument, "gap_mechanism_change: which must be 3 "// &
+            "(approach) or 4 (retraction)", status, errmsg)
+         return
+      end if
+      if (.not. (mu_lo > 0.0_wp .and. mu_hi > mu_lo)) then
+         call set_error(wa_invalid_argument, "gap_mechanism_change: 0 < mu_lo < mu_hi "// &
+            "required", status, errmsg)
+         return
+      end if
+      lo = mu_lo
+      hi = mu_hi
+      m_lo = mechanism_at(lo, stat, msg)
+      if (stat /= wa_ok) then
+         call set_error(stat, "gap mechanism change: mu_lo: "//trim(msg), status, errmsg)
+         return
+      end if
+      done = .false.
+      bisect: do step = 1, max_steps
+         done = .not. (hi - lo > 1.0e-10_wp*hi)
+         if (done) exit bisect
+         do k = 1, size(tries)
+            x = lo*(hi/lo)**tries(k)
+            done = .not. (x > lo .and. x < hi)
+            if (done) exit bisect
+            m_x = mechanism_at(x, stat, msg)
+            if (stat == wa_ok) exit
+         end do
+         if (stat /= wa_ok) then
+            call set_error(stat, "gap mechanism change: the cycle fails at every trial "// &
+               "mu inside the bracket ("//trim(msg)//")", status, errmsg)
+            done = .true.
+            exit bisect
+         end if
+         if (m_x == m_lo) then
+            lo = x
+         else
+            hi = x
+         end if
+      end do bisect
+      if (.not. done) call set_error(wa_not_converged, "gap mechanism change: no "// &
+         "convergence in 200 bisection steps", status, errmsg)
+      mu_change = sqrt(lo*hi)
+      if (present(bracket)) bracket = [lo, hi]
+   contains
+      integer function mechanism_at(mu, stat, msg)
+         real(wp), intent(in) :: mu
+         integer, intent(out) :: stat
+         character(len=*), intent(inout) :: msg
+         type(params_type) :: params
+         integer :: ma, mr
+         mechanism_at = -1
+         msg = ""
+         call new_params(alpha, mu, params, stat, msg)
+         if (stat /= wa_ok) return
+         call gap_mechanisms(model, params, ma, mr, stat, msg)
+         if (stat /= wa_ok) return
+         mechanism_at = merge(ma, mr, which == 3)
+      end function mechanism_at
+   end subroutine gap_mechanism_change
+
+end module wa_gapmech
