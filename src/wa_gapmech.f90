@@ -9,35 +9,35 @@
 !>   2 when the approach jumps from a state with contact (at a minimum of gbar*).
 !> Retraction (which = 4):
 !>   1 when contact is lost by a jump (from a maximum of gbar* on a state with contact to
-!>     a state without contact or far apart),
+!>     a state without contact or far apart), unless that maximum lies at a* < 1e-3
+!>     (a_point_pull_off, as for the pull-off under load control): the contact has then
+!>     shrunk to a point first and the loss counts as gradual. The maximum is born at
+!>     a* -> 0 and moves exponentially fast with mu there, so the birth itself cannot be
+!>     placed in double precision; a* = 1e-3 can, by the smooth ln(a*/1e-3),
 !>   2 when the retraction jumps between states with contact before.
 !> Jumps between states without contact (MD's jump from far apart at the first
 !> interaction and back at the interaction lost, and any between crest-zone states) do not
 !> count: MD has them for every mu > 0 (gbar* rises as c* ln(1/c*) from the first
 !> interaction) and at small mu they are below the traced branch's resolution.
 module wa_gapmech
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, set_error
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type, zone_no_contact
-   use wa_models, only: model_roots, max_model_roots
-   use wa_separation, only: state_mean_gap
    use wa_branch, only: branch_type, trace_branch
+   use wa_loadpath, only: a_point_pull_off
    use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
       gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
    implicit none
    private
 
    public :: gap_mechanisms, gap_mechanisms_from_branch, gap_mechanism_change, &
-      gap_start_indicator, gap_mechanism_name
+      gap_mechanism_name
    public :: gap_flag_jump_contact, gap_flag_jumps_within
 
    !> The flags of a gap mechanism code (see the module header)
    integer, parameter :: gap_flag_jump_contact = 1, gap_flag_jumps_within = 2
-
-   !> The a* -> 0 end of the contact curve where wa_gappath starts its chain (DW)
-   real(wp), parameter :: a_limit = 1.0e-15_wp
 
 contains
 
@@ -78,13 +78,17 @@ contains
    !> The approach and retraction mechanisms of the gap-controlled cycle on a traced branch
    !> (-1 both when the cycle fails).
    subroutine gap_mechanisms_from_branch(model, params, branch, mech_approach, &
-         mech_retraction, status, errmsg)
+         mech_retraction, status, errmsg, ln_a_out)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
       integer, intent(out) :: mech_approach, mech_retraction
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      !> ln(a* / a_point_pull_off) at the maximum of gbar* from which the retraction leaves
+      !> contact by a jump (NaN where it does not): the map's smooth indicator of the
+      !> jump-out boundaries
+      real(wp), intent(out), optional :: ln_a_out
       type(gap_path_type) :: path
       real(wp) :: p_min, g_min, a_min, g_contact
       integer :: k
@@ -92,6 +96,7 @@ contains
 
       mech_approach = -1
       mech_retraction = -1
+      if (present(ln_a_out)) ln_a_out = ieee_value(1.0_wp, ieee_quiet_nan)
       call gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
          status, errmsg)
       if (status /= wa_ok) return
@@ -108,8 +113,11 @@ contains
             if (from_contact .and. to_contact) &
                mech_approach = ior(mech_approach, gap_flag_jumps_within)
          else if (path%stage(k) == gap_stage_retraction) then
-            if (from_contact .and. .not. to_contact) &
-               mech_retraction = ior(mech_retraction, gap_flag_jump_contact)
+            if (from_contact .and. .not. to_contact) then
+               if (present(ln_a_out)) ln_a_out = log(path%a_star(k)/a_point_pull_off)
+               if (path%a_star(k) >= a_point_pull_off) &     ! else shrunk to a point
+                  mech_retraction = ior(mech_retraction, gap_flag_jump_contact)
+            end if
             ! jumps within contact before contact is lost (not after a regain)
             if (from_contact .and. to_contact .and. &
                iand(mech_retraction, gap_flag_jump_contact) == 0) &
@@ -122,43 +130,6 @@ contains
          in_contact = path%a_star(k) > 0.0_wp .and. path%zone_case(k) /= zone_no_contact
       end function in_contact
    end subroutine gap_mechanisms_from_branch
-
-   !> A smooth quantity whose sign decides whether gbar* has a maximum next to the a* -> 0
-   !> end of the contact curve (models without states free of contact, DW): gbar* at the
-   !> branch's first point (a_start) minus gbar* at a* = 1e-15, where wa_gappath's chain
-   !> starts (positive: gbar* rises from the end, the retraction jumps out of contact from
-   !> the maximum; negative: it falls, contact is lost at a* -> 0). NaN when the chain
-   !> starts elsewhere (MD) or the state at 1e-15 is not found.
-   subroutine gap_start_indicator(model, params, branch, value)
-      integer, intent(in) :: model
-      type(params_type), intent(in) :: params
-      type(branch_type), intent(in) :: branch
-      real(wp), intent(out) :: value
-      type(state_type) :: roots(max_model_roots), s
-      real(wp) :: d, d_best, g
-      integer :: n, k, best, stat
-      character(len=128) :: msg
-      value = ieee_value(1.0_wp, ieee_quiet_nan)
-      if (branch%n < 2) return
-      if (branch%zone_case(1) == zone_no_contact) return
-      msg = ""
-      call model_roots(model, params, a_limit, roots, n, stat, msg)
-      if (stat /= wa_ok) return
-      best = 0
-      d_best = huge(1.0_wp)
-      do k = 1, min(n, size(roots))
-         d = abs(roots(k)%c_star - branch%c_star(1))
-         if (d < d_best) then
-            d_best = d
-            best = k
-         end if
-      end do
-      if (best == 0) return
-      s = roots(best)
-      call state_mean_gap(model, params, s, g, stat, msg)
-      if (stat /= wa_ok .or. .not. ieee_is_finite(g)) return
-      value = branch%gbar(1) - g
-   end subroutine gap_start_indicator
 
    !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the gap
    !> approach (which = 3) or retraction (which = 4) mechanism changes, to 1e-10 relative

@@ -24,7 +24,7 @@ module wa_map
    use wa_curve, only: curve_residual, curve_y_max
    use wa_loadpath, only: path_type, path_from_branch, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap, a_point_pull_off
-   use wa_gapmech, only: gap_mechanisms_from_branch, gap_start_indicator, gap_mechanism_name
+   use wa_gapmech, only: gap_mechanisms_from_branch, gap_mechanism_name
    implicit none
    private
 
@@ -118,15 +118,15 @@ module wa_map
       !> ln(a* of the pull-off / a_point_pull_off) where contact is lost at a minimum
       !> (gradual <-> jump where the minimum passes a_point_pull_off)
       real(wp) :: ln_a_pf = 0.0_wp
-      !> gap_start_indicator: changes sign where a maximum of gbar* is born at the a* -> 0
-      !> end of the contact curve (DW retraction: gradual <-> jump-out)
-      real(wp) :: g_start = 0.0_wp
+      !> ln(a* / a_point_pull_off) at the maximum of gbar* from which the gap-controlled
+      !> retraction jumps out of contact (gradual <-> jump-out where it passes 1e-3)
+      real(wp) :: ln_a_out = 0.0_wp
    end type probe_type
 
    !> The indicators a boundary can be followed by (the first whose signs differ across
    !> a located bracket is used for the next point's secant)
    integer, parameter :: ind_none = 0, ind_loads = 1, ind_f_start = 2, ind_a_pf = 3, &
-      ind_g_start = 4
+      ind_a_out = 4
 
    !> What continuing a curve needs (fixed for one map).
    type :: tracker_type
@@ -1018,8 +1018,8 @@ contains
       case (ind_a_pf)
          indicator_of = p%ln_a_pf
          if (tr%which /= 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
-      case (ind_g_start)
-         indicator_of = p%g_start
+      case (ind_a_out)
+         indicator_of = p%ln_a_out
          if (tr%which /= 4) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       case default
          indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -1033,7 +1033,7 @@ contains
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp) :: g_lo, g_hi
       integer :: ind
-      do ind = ind_loads, ind_g_start
+      do ind = ind_loads, ind_a_out
          g_lo = indicator_of(tr, ind, p_lo)
          g_hi = indicator_of(tr, ind, p_hi)
          if (ieee_is_finite(g_lo) .and. ieee_is_finite(g_hi) .and. &
@@ -1128,19 +1128,18 @@ contains
       p%v_pf = nan
       p%f_start = nan
       p%ln_a_pf = nan
-      p%g_start = nan
+      p%ln_a_out = nan
       call new_params(alpha, exp(t), params, p%status, msg)
       if (p%status /= wa_ok) return
       call trace_branch(model, params, br, p%status, msg)
       if (p%status /= wa_ok) return
       if (iand(control, map_control_gap) /= 0) then
          call gap_mechanisms_from_branch(model, params, br, p%mech(3), p%mech(4), p%status, &
-            msg)
+            msg, ln_a_out=p%ln_a_out)
          if (p%status /= wa_ok) then
             p%mech = -1
             return
          end if
-         call gap_start_indicator(model, params, br, p%g_start)
       end if
       if (iand(control, map_control_load) == 0) return
       call path_from_branch(model, params, br, path, p%status, msg, mechanisms_only=.true.)

@@ -182,10 +182,9 @@ contains
    end subroutine test_invalid
 
    !> Gap control (codes 3xx, 4xx): DW, 20 alpha over [0.01, 10], every boundary point on
-   !> the grid rebisected by gap_mechanism_change from +-1e-6 agrees to 1e-8 relative,
-   !> except where the retraction's jump-out flag changes (DW 401, MD 423): a maximum of
-   !> gbar* born at the a* -> 0 end, decided by gbar* differences of a few ulps over a band
-   !> of ~2e-7 relative in mu (doc/theory.md, "Adhesion map"): there to 5e-7.
+   !> the grid rebisected by gap_mechanism_change from +-1e-6 agrees to 1e-8 relative
+   !> (the jump-out boundaries 401, 423 included: the jump-out counts from a maximum of
+   !> gbar* at a* >= 1e-3, a smooth condition; doc/theory.md, "Adhesion map").
    subroutine test_dw_gap_points(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: alpha(20)
@@ -207,7 +206,7 @@ contains
       integer, intent(in) :: model, every, min_points, min_boundaries
       real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
       type(map_type) :: map
-      real(wp) :: mu_c, worst, d, worst_out
+      real(wp) :: mu_c, worst, d
       character(len=200) :: text
       integer :: status, c, p, n_checked
       character(len=256) :: msg
@@ -219,7 +218,6 @@ contains
       call check(error, map%n_boundaries >= min_boundaries, "gap boundaries found")
       if (allocated(error)) return
       worst = 0.0_wp
-      worst_out = 0.0_wp
       n_checked = 0
       do c = 1, map%n_boundaries
          associate (b => map%boundary(c))
@@ -235,20 +233,13 @@ contains
                call check(error, status == wa_ok, trim(text))
                if (allocated(error)) return
                d = abs(mu_c - b%mu(p))/b%mu(p)
-               if (b%which == 4 .and. iand(ieor(b%mech_below, b%mech_above), 1) /= 0) then
-                  worst_out = max(worst_out, d)
-               else
-                  worst = max(worst, d)
-               end if
+               worst = max(worst, d)
                n_checked = n_checked + 1
             end do
          end associate
       end do
-      write (text, '(a,i0,a,es10.3,a,es10.3)') "points checked: ", n_checked, ", worst ", &
-         worst, ", jump-out flag ", worst_out
-      call check(error, worst_out <= 5.0e-7_wp, "jump-out boundary points agree to 5e-7: "// &
-         trim(text))
-      if (allocated(error)) return
+      write (text, '(a,i0,a,es10.3)') "points checked: ", n_checked, ", worst ", worst
+      write (*, '(4x,a)') "gap boundaries: "//trim(text)
       call check(error, n_checked >= min_points, trim(text))
       if (allocated(error)) return
       call check(error, worst <= 1.0e-8_wp, "gap boundary points agree with "// &
