@@ -89,14 +89,14 @@ def gap_map():
 
 def test_gap_control(gap_map):
     """Gap control (codes 3xx, 4xx): DW has one boundary, retraction gradual -> jump-out
-    (401) at mu 2.13757 for alpha 0.3 (gap_mechanism_change; defined to ~2e-7), on top of
+    (401) at mu 2.34035 for alpha 0.3 (gap_mechanism_change, to 1e-8), on top of
     the load-control ones; the approach always jumps into contact (region 1)."""
     m = gap_map
     codes = {b.code for b in m.boundaries}
     assert 401 in codes and {101, 212}.issubset(codes)
     b = [b for b in m.boundaries if b.code == 401][0]
     assert b.meaning == "gap retraction: gradual -> jump-out"
-    assert b.mu[b.alpha == 0.3][0] == pytest.approx(2.1375727951, rel=1e-6)
+    assert b.mu[b.alpha == 0.3][0] == pytest.approx(2.3403548179, rel=1e-8)
     assert m.ga_region.shape == m.gr_region.shape == m.fc_region.shape == (20, 2)
     assert (m.ga_region == 1).all()
     i = np.searchsorted(m.mu, b.mu[0])

@@ -868,8 +868,8 @@ static void test_adhesion_map(void) {
 }
 
 /* wa_adhesion_map_control: gap control over DW alpha 0.3, 0.31 gives only the retraction
-   boundary 401 (gradual -> jump-out), at alpha 0.3 at mu 2.13757 (where
-   gap_mechanism_change puts it; that boundary is defined to ~2e-7 relative); control 4
+   boundary 401 (gradual -> jump-out), at alpha 0.3 at mu 2.34035 (where
+   gap_mechanism_change puts it, to 1e-8 relative); control 4
    is refused; WA_MAP_CONTROL_LOAD gives what wa_adhesion_map gives. */
 static void test_adhesion_map_control(void) {
    const double alpha[2] = {0.3, 0.31};
@@ -880,9 +880,9 @@ static void test_adhesion_map_control(void) {
    CHECK(st == WA_OK && n >= 2, "adhesion_map_control gap: status %d, %d points", st, n);
    for (i = 0; i < n && i < 256; i++) {
       if (code[i] < 300) only_gap = 0;
-      if (code[i] == 401 && a[i] == 0.3) saw401 = close_to(m[i], 2.1375727951, 1e-6);
+      if (code[i] == 401 && a[i] == 0.3) saw401 = close_to(m[i], 2.3403548179, 1e-8);
    }
-   CHECK(only_gap && saw401, "adhesion_map_control gap: 401 at mu 2.13757, gap codes only");
+   CHECK(only_gap && saw401, "adhesion_map_control gap: 401 at mu 2.34035, gap codes only");
    st = wa_adhesion_map_control(WA_MODEL_DW, 4, 2, alpha, 1e-2, 1e2, 256, code, a, m, &n);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map_control control 4 refused");
    st = wa_adhesion_map_control(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 2, alpha, 1e-2, 1e2, 256,

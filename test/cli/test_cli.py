@@ -463,7 +463,7 @@ def test_map_csv_and_usage_errors(cli):
 
 def test_map_gap_control(cli):
     """`map --control gap` prints only gap-control boundaries (DW: 401, retraction gradual
-    -> jump-out, at mu 2.13757 for alpha 0.3), each code explained; `both` adds the
+    -> jump-out, at mu 2.34035 for alpha 0.3), each code explained; `both` adds the
     load-control ones; `--control both` is refused outside map."""
     res = run(cli, "map", "--model", "dw", "--alpha", "0.3,0.31", "--mu-range",
               "1e-2:1e2:20:log", "--control", "gap")
@@ -472,7 +472,7 @@ def test_map_gap_control(cli):
     assert {int(r[0]) for r in data} == {401}
     assert "# boundary 401 = gap retraction: gradual -> jump-out" in header
     mu_401 = [float(r[2]) for r in data if float(r[1]) == 0.3][0]
-    assert abs(mu_401 - 2.1375727951) <= 1e-6 * mu_401
+    assert abs(mu_401 - 2.3403548179) <= 1e-8 * mu_401
     both = run(cli, "map", "--model", "dw", "--alpha", "0.3,0.31", "--mu-range",
                "1e-2:1e2:20:log", "--control", "both").stdout
     codes = {int(l.split()[0]) for l in both.splitlines() if l and not l.startswith("#")}
