@@ -748,39 +748,15 @@ contains
       !> turn_pushed: the fold is pushed (or none found); turn_at_switch: P* turns within
       !> round-off of the switch, no fold is pushed
       integer, intent(out) :: turn_at
-      real(wp), parameter :: golden = 0.3819660112501051518_wp
       type(state_type) :: s, s_hint
       type(curve_point) :: f
-      real(wp) :: lo, hi, x1, x2, f1, f2, sgn, p_switch
-      integer :: iter
+      real(wp) :: sgn, p_switch
 
       turn_at = turn_pushed
       s_hint = curve_state(model, params, p%a, p%y)
       sgn = sign(1.0_wp, p%dp)                 ! +1: a maximum of P*, -1: a minimum
-      lo = min(p%a, a_switch)
-      hi = max(p%a, a_switch)
-      x1 = lo + golden*(hi - lo)
-      x2 = hi - golden*(hi - lo)
-      f1 = sgn*load_at(x1)
-      f2 = sgn*load_at(x2)
-      do iter = 1, 200
-         if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
-         if (f1 > f2) then
-            hi = x2; x2 = x1; f2 = f1
-            x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
-         else
-            lo = x1; x1 = x2; f1 = f2
-            x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
-         end if
-      end do
+      call case1_extremum(model, params, s_hint%c_star, p%a, a_switch, sgn, s, status, errmsg)
       if (status /= wa_ok) return
-      call curve_equilibrium(model, params, 0.5_wp*(lo + hi), s_hint%c_star, s, status, errmsg)
-      if (status /= wa_ok) return
-      if (s%zone_case /= zone_inside) then
-         call set_error(wa_numerical_error, "trace_branch: the fold before a case switch "// &
-            "could not be located", status, errmsg)
-         return
-      end if
       ! a turn of P* within round-off of the switch's load, beyond p's (or of both) is no
       ! fold: the corner is the extremum. (One within round-off of p's load only is a
       ! fold: P* then moves on to the switch by more than round-off.)
@@ -796,13 +772,6 @@ contains
       f%zone_case = zone_inside
       f%t = p%t
       call push(model, params, f, event_fold, nint(sgn), branch)
-   contains
-      real(wp) function load_at(a)
-         real(wp), intent(in) :: a
-         type(state_type) :: st
-         call curve_equilibrium(model, params, a, s_hint%c_star, st, status, errmsg)
-         load_at = st%p_star
-      end function load_at
    end subroutine fold_before_switch
 
    !> The folds of P* on the case-1 curve between p and the switch at a_switch where the
@@ -822,11 +791,10 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type), intent(inout) :: branch
       integer, parameter :: n = 32
-      real(wp), parameter :: golden = 0.3819660112501051518_wp
       type(state_type) :: s_hint, s
       type(curve_point) :: f
-      real(wp) :: a(0:n), load(0:n), d(0:n), sgn, lo, hi, x1, x2, f1, f2, noise
-      integer :: k, iter
+      real(wp) :: a(0:n), load(0:n), d(0:n), sgn, noise
+      integer :: k
 
       status = wa_ok
       s_hint = curve_state(model, params, p%a, p%y)
@@ -852,28 +820,9 @@ contains
       do k = 0, n - 1
          if (.not. (d(k)*d(k + 1) < 0.0_wp)) cycle
          sgn = sign(1.0_wp, d(k))             ! +1: a maximum at sample k, -1: a minimum
-         lo = min(a(max(k - 1, 0)), a(k + 1)); hi = max(a(max(k - 1, 0)), a(k + 1))
-         x1 = lo + golden*(hi - lo); x2 = hi - golden*(hi - lo)
-         f1 = sgn*load_at(x1); f2 = sgn*load_at(x2)
-         do iter = 1, 200
-            if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
-            if (f1 > f2) then
-               hi = x2; x2 = x1; f2 = f1
-               x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
-            else
-               lo = x1; x1 = x2; f1 = f2
-               x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
-            end if
-         end do
+         call case1_extremum(model, params, s_hint%c_star, a(max(k - 1, 0)), a(k + 1), sgn, &
+            s, status, errmsg)
          if (status /= wa_ok) return
-         call curve_equilibrium(model, params, 0.5_wp*(lo + hi), s_hint%c_star, s, status, &
-            errmsg)
-         if (status /= wa_ok) return
-         if (s%zone_case /= zone_inside) then
-            call set_error(wa_numerical_error, "trace_branch: a fold before a case switch "// &
-               "could not be located", status, errmsg)
-            return
-         end if
          f%a = s%a_star
          f%y = curve_variable(model, s)
          f%zone_case = zone_inside
@@ -888,6 +837,46 @@ contains
          load_at = st%p_star
       end function load_at
    end subroutine folds_before_switch
+
+   !> The extremum of P* (a maximum for sgn = +1) on the case-1 curve between a* = a1 and
+   !> a2: golden sections on P*(a*) of the state nearest c_hint, to 1e-12 relative in a*.
+   subroutine case1_extremum(model, params, c_hint, a1, a2, sgn, s, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: c_hint, a1, a2, sgn
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: golden = 0.3819660112501051518_wp
+      real(wp) :: lo, hi, x1, x2, f1, f2
+      integer :: iter
+      status = wa_ok
+      lo = min(a1, a2); hi = max(a1, a2)
+      x1 = lo + golden*(hi - lo); x2 = hi - golden*(hi - lo)
+      f1 = sgn*load_at(x1); f2 = sgn*load_at(x2)
+      do iter = 1, 200
+         if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
+         if (f1 > f2) then
+            hi = x2; x2 = x1; f2 = f1
+            x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
+         else
+            lo = x1; x1 = x2; f1 = f2
+            x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
+         end if
+      end do
+      if (status /= wa_ok) return
+      call curve_equilibrium(model, params, 0.5_wp*(lo + hi), c_hint, s, status, errmsg)
+      if (status /= wa_ok) return
+      if (s%zone_case /= zone_inside) call set_error(wa_numerical_error, "trace_branch: "// &
+         "a fold before a case switch could not be located", status, errmsg)
+   contains
+      real(wp) function load_at(a)
+         real(wp), intent(in) :: a
+         type(state_type) :: st
+         call curve_equilibrium(model, params, a, c_hint, st, status, errmsg)
+         load_at = st%p_star
+      end function load_at
+   end subroutine case1_extremum
 
    !> The a* where F(a*, y_max) = 0 between a1 and a2 (case switch, to ~1e-15).
    function switch_abscissa(model, params, a1, v1, a2, v2, status, errmsg) result(a)
