@@ -372,23 +372,8 @@ contains
       real(wp) :: t0, t1
       logical :: progress
 
-      alpha = [0.3_wp]
-      mu = [1.0_wp]
-      if (si_given(opts)) then
-         alpha = [si_params%alpha]
-         mu = [si_params%mu]
-      end if
-      if (allocated(opts%alpha)) alpha = opts%alpha
-      if (allocated(opts%mu)) mu = opts%mu
+      call critical_grid(opts, si_params, alpha, mu)
       msg = ""
-      do j = 1, size(alpha)                   ! every argument checked before any work
-         call new_params(alpha(j), 1.0_wp, params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
-      end do
-      do i = 1, size(mu)
-         call new_params(1.0_wp, mu(i), params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
-      end do
       allocate (p_fc(size(mu), size(alpha)), p_pf(size(mu), size(alpha)), &
          fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)), &
          row_stat(size(mu)), row_msg(size(mu)))
@@ -442,23 +427,8 @@ contains
       type(params_type) :: params
       integer :: i, j, status, n_failed
 
-      alpha = [0.3_wp]
-      mu = [1.0_wp]
-      if (si_given(opts)) then
-         alpha = [si_params%alpha]
-         mu = [si_params%mu]
-      end if
-      if (allocated(opts%alpha)) alpha = opts%alpha
-      if (allocated(opts%mu)) mu = opts%mu
+      call critical_grid(opts, si_params, alpha, mu)
       msg = ""
-      do j = 1, size(alpha)                   ! every argument checked before any work
-         call new_params(alpha(j), 1.0_wp, params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
-      end do
-      do i = 1, size(mu)
-         call new_params(1.0_wp, mu(i), params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
-      end do
       allocate (values(gap_critical_count, size(mu), size(alpha)), row_stat(size(mu)), &
          row_msg(size(mu)))
       n_failed = 0
@@ -654,6 +624,34 @@ contains
          end if
       end do
    end function next_good
+
+   !> The alpha and mu of `critical` (both controls): defaults 0.3 and 1, the SI options,
+   !> then --alpha and --mu / --mu-range; every value checked before any work.
+   subroutine critical_grid(opts, si_params, alpha, mu)
+      type(cli_options), intent(in) :: opts
+      type(params_type), intent(in) :: si_params
+      real(wp), allocatable, intent(out) :: alpha(:), mu(:)
+      type(params_type) :: params
+      character(len=256) :: msg
+      integer :: i, status
+      alpha = [0.3_wp]
+      mu = [1.0_wp]
+      if (si_given(opts)) then
+         alpha = [si_params%alpha]
+         mu = [si_params%mu]
+      end if
+      if (allocated(opts%alpha)) alpha = opts%alpha
+      if (allocated(opts%mu)) mu = opts%mu
+      msg = ""
+      do i = 1, size(alpha)
+         call new_params(alpha(i), 1.0_wp, params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
+      do i = 1, size(mu)
+         call new_params(1.0_wp, mu(i), params, status, msg)
+         if (status /= wa_ok) call usage_error("--"//trim(msg))
+      end do
+   end subroutine critical_grid
 
    function event_legend(line) result(text)
       integer, intent(in) :: line
