@@ -9,7 +9,7 @@
 !> with steps adapted to the corrector's convergence and to the turn of the tangent.
 !> Case 2 (c* = 1/2) is explicit in a*; it holds where F(a*, y_max) < 0.
 module wa_branch
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, wa_numerical_error, &
       set_error
@@ -54,6 +54,8 @@ module wa_branch
       !> +1 local maximum of P* along the curve, -1 local minimum (folds and corners),
       !> 2 where a* turns back (two case-1 roots merge; stability changes), else 0
       integer, allocatable :: extremum(:)
+      !> gbar holds the mean gaps (trace_options%mean_gap); else it is NaN throughout
+      logical :: with_gbar = .true.
    end type branch_type
 
    !> Continuation controls (defaults suit every model and parameter tested).
@@ -65,6 +67,9 @@ module wa_branch
       !> Largest turn of the tangent per step [rad]
       real(wp) :: max_turn = 0.15_wp
       integer :: max_points = 20000
+      !> Compute gbar* at every point (.false.: NaN; for callers that need only P*, such
+      !> as the load-control mechanisms of the adhesion map)
+      logical :: mean_gap = .true.
    end type trace_options
 
    !> A point of the curve in the scaled plane, with its derivatives.
@@ -100,6 +105,7 @@ contains
 
       if (present(options)) opts = options
       call reserve(branch, 256)
+      branch%with_gbar = opts%mean_gap
       call check_params(params, status, errmsg)
       if (status /= wa_ok) return
       call check_model(model, status, errmsg)
@@ -952,8 +958,12 @@ contains
          s%zone_case = q%zone_case
       end if
       ! the curve's states leave gbar to the accepted points (MD: a quadrature)
-      call state_mean_gap(model, params, s, g, status)
-      s%gbar = g
+      if (branch%with_gbar) then
+         call state_mean_gap(model, params, s, g, status)
+         s%gbar = g
+      else
+         s%gbar = ieee_value(1.0_wp, ieee_quiet_nan)
+      end if
       if (q%zone_case == zone_inside) then
          stable = q%det > 0.0_wp
       else                                             ! one degree of freedom: dP*/da* > 0

@@ -1131,7 +1131,8 @@ contains
       p%ln_a_out = nan
       call new_params(alpha, exp(t), params, p%status, msg)
       if (p%status /= wa_ok) return
-      call trace_branch(model, params, br, p%status, msg)
+      opts%mean_gap = iand(control, map_control_gap) /= 0    ! load control needs P* only
+      call trace_branch(model, params, br, p%status, msg, opts)
       if (p%status /= wa_ok) return
       if (iand(control, map_control_gap) /= 0) then
          call gap_mechanisms_from_branch(model, params, br, p%mech(3), p%mech(4), p%status, &
