@@ -394,9 +394,10 @@ contains
       end do
    end subroutine locate_extrema
 
-   !> Golden sections on gbar* over the parameter between points i-1 and i+1, or over a*
-   !> when the two intervals use different parameters (a* and the curve variable y, where
-   !> a* turns steep) and a* is monotone across them.
+   !> The extremum of gbar* over the parameter between points i-1 and i+1 (Brent's
+   !> minimisation, then a parabola-vertex step), or over a* when the two intervals use
+   !> different parameters (a* and the curve variable y, where a* turns steep) and a* is
+   !> monotone across them.
    subroutine refine_extremum(model, params, ch, i, s, status, errmsg)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
@@ -405,11 +406,8 @@ contains
       type(state_type), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp), parameter :: r = 0.6180339887498949_wp
-      real(wp) :: lo, hi, x1, x2, f1, f2, sgn, lo0, hi0
-      integer :: iter
+      real(wp) :: lo, hi, sgn, lo0, hi0, x_best
       logical :: in_a
-      type(state_type) :: s1, s2
 
       status = wa_ok
       s = chain_state(ch, i)
@@ -423,34 +421,82 @@ contains
          lo = param(ch, i - 1, 0.0_wp); hi = param(ch, i, 1.0_wp)
       end if
       lo0 = lo; hi0 = hi
-      x1 = hi - r*(hi - lo); x2 = lo + r*(hi - lo)
-      call solve(x1, s1)
+      call brent_minimum(min(lo, hi), max(lo, hi), x_best)
       if (status /= wa_ok) return
-      call solve(x2, s2)
-      if (status /= wa_ok) return
-      f1 = -sgn*s1%gbar; f2 = -sgn*s2%gbar
-      do iter = 1, 120
-         if (abs(hi - lo) <= 1.0e-13_wp*max(abs(hi), abs(lo)) + 1.0e-300_wp) exit
-         if (f1 < f2) then
-            hi = x2; x2 = x1; f2 = f1; s2 = s1
-            x1 = hi - r*(hi - lo)
-            call solve(x1, s1)
-            if (status /= wa_ok) return
-            f1 = -sgn*s1%gbar
-         else
-            lo = x1; x1 = x2; f1 = f2; s1 = s2
-            x2 = lo + r*(hi - lo)
-            call solve(x2, s2)
-            if (status /= wa_ok) return
-            f2 = -sgn*s2%gbar
-         end if
-      end do
-      s = merge(s1, s2, f1 < f2)
-      call vertex_refinement(merge(x1, x2, f1 < f2))
+      call vertex_refinement(x_best)
       if (status /= wa_ok) return
       if (-sgn*s%gbar > -sgn*ch%g(i)) s = chain_state(ch, i)    ! never worse than the point
    contains
-      !> The golden section leaves x to ~sqrt(eps) of the bracket (gbar* is flat there):
+      !> Brent's minimisation of -sgn gbar* over [a, b] (golden sections and parabolic
+      !> steps) to 1e-9 of the bracket, x to ~sqrt(eps) of it in any case (gbar* is flat
+      !> there): the vertex refinement below does the rest. s: the state at x.
+      subroutine brent_minimum(a_in, b_in, x)
+         real(wp), intent(in) :: a_in, b_in
+         real(wp), intent(out) :: x
+         real(wp), parameter :: c = 0.3819660112501051518_wp
+         real(wp) :: a, b, v, w, fv, fw, fx, d, e, m, tol, t2, pp, q, rr, u, fu
+         type(state_type) :: su
+         integer :: it
+         a = a_in; b = b_in
+         x = a + c*(b - a); v = x; w = x
+         call solve(x, s)
+         if (status /= wa_ok) return
+         fx = -sgn*s%gbar; fv = fx; fw = fx
+         d = 0.0_wp; e = 0.0_wp
+         do it = 1, 100
+            m = 0.5_wp*(a + b)
+            tol = 1.0e-9_wp*abs(b_in - a_in) + 1.0e-300_wp
+            t2 = 2.0_wp*tol
+            if (abs(x - m) <= t2 - 0.5_wp*(b - a)) exit
+            pp = 0.0_wp; q = 0.0_wp; rr = 0.0_wp
+            if (abs(e) > tol) then                   ! a parabola through x, w, v
+               rr = (x - w)*(fx - fv)
+               q = (x - v)*(fx - fw)
+               pp = (x - v)*q - (x - w)*rr
+               q = 2.0_wp*(q - rr)
+               if (q > 0.0_wp) then
+                  pp = -pp
+               else
+                  q = -q
+               end if
+               rr = e
+               e = d
+            end if
+            if (abs(pp) < abs(0.5_wp*q*rr) .and. pp > q*(a - x) .and. pp < q*(b - x)) then
+               d = pp/q
+               u = x + d
+               if (u - a < t2 .or. b - u < t2) d = sign(tol, m - x)
+            else                                     ! a golden section
+               e = merge(b - x, a - x, x < m)
+               d = c*e
+            end if
+            u = x + merge(d, sign(tol, d), abs(d) >= tol)
+            call solve(u, su)
+            if (status /= wa_ok) return
+            fu = -sgn*su%gbar
+            if (fu <= fx) then
+               if (u < x) then
+                  b = x
+               else
+                  a = x
+               end if
+               v = w; fv = fw; w = x; fw = fx; x = u; fx = fu; s = su
+            else
+               if (u < x) then
+                  a = u
+               else
+                  b = u
+               end if
+               if (fu <= fw .or. w == x) then
+                  v = w; fv = fw; w = u; fw = fu
+               else if (fu <= fv .or. v == x .or. v == w) then
+                  v = u; fv = fu
+               end if
+            end if
+         end do
+      end subroutine brent_minimum
+
+      !> The minimisation leaves x to ~sqrt(eps) of the bracket (gbar* is flat there):
       !> the vertex of the parabola through x0 and x0 +- d, with d = 1e-3 of the bracket,
       !> places it to ~1e-9 of the bracket (the noise of gbar* over g'' d); repeated with
       !> 2d and extrapolated (Richardson) to remove the d^2 bias of the cubic term. Kept

@@ -516,7 +516,9 @@ contains
       integer :: stat, m_hi, k_fwd, k_bwd
 
       tr%model = map%model
-      tr%control = map%control
+      ! a curve's probes need only its own control's mechanisms (a load-control curve's
+      ! traces then skip the mean gap even in a map of both)
+      tr%control = merge(map_control_load, map_control_gap, which <= 2)
       tr%which = which
       tr%ma = ma
       tr%mb = mb
