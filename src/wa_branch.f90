@@ -20,7 +20,7 @@ module wa_branch
       curve_case2_load, curve_variable, curve_equilibrium, curve_load
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_separation, only: state_mean_gap, md_no_contact_family
+   use wa_separation, only: state_mean_gap, md_no_contact_family, dw_state_gbar, md_state_gbar
    implicit none
    private
 
@@ -959,8 +959,15 @@ contains
       end if
       ! the curve's states leave gbar to the accepted points (MD: a quadrature)
       if (branch%with_gbar) then
-         call state_mean_gap(model, params, s, g, status)
-         s%gbar = g
+         ! a solved state: DW and MD take their mean gap without re-checking it
+         if (model == model_dw) then
+            s%gbar = dw_state_gbar(params, s)
+         else if (model == model_md) then
+            s%gbar = md_state_gbar(params, s)
+         else
+            call state_mean_gap(model, params, s, g, status)
+            s%gbar = g
+         end if
       else
          s%gbar = ieee_value(1.0_wp, ieee_quiet_nan)
       end if
