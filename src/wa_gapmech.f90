@@ -22,11 +22,11 @@
 module wa_gapmech
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp
-   use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, set_error
+   use wa_status, only: wa_ok, wa_invalid_argument, set_error
    use wa_params, only: params_type, new_params
-   use wa_state, only: state_type, zone_no_contact
+   use wa_state, only: zone_no_contact
    use wa_branch, only: branch_type, trace_branch
-   use wa_loadpath, only: a_point_pull_off
+   use wa_loadpath, only: a_point_pull_off, bisect_mechanism
    use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
       gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
    implicit none
@@ -146,11 +146,6 @@ contains
       real(wp), parameter :: tries(15) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp, 0.375_wp, 0.625_wp, 0.3125_wp, 0.6875_wp, 0.1875_wp, &
          0.8125_wp, 0.4375_wp, 0.5625_wp]
-      integer, parameter :: max_steps = 200
-      character(len=256) :: msg
-      real(wp) :: lo, hi, x
-      integer :: m_lo, m_x, step, k, stat
-      logical :: done
 
       mu_change = ieee_value(1.0_wp, ieee_quiet_nan)
       if (present(bracket)) bracket = mu_change
@@ -165,40 +160,8 @@ contains
             "required", status, errmsg)
          return
       end if
-      lo = mu_lo
-      hi = mu_hi
-      m_lo = mechanism_at(lo, stat, msg)
-      if (stat /= wa_ok) then
-         call set_error(stat, "gap mechanism change: mu_lo: "//trim(msg), status, errmsg)
-         return
-      end if
-      done = .false.
-      bisect: do step = 1, max_steps
-         done = .not. (hi - lo > 1.0e-10_wp*hi)
-         if (done) exit bisect
-         do k = 1, size(tries)
-            x = lo*(hi/lo)**tries(k)
-            done = .not. (x > lo .and. x < hi)
-            if (done) exit bisect
-            m_x = mechanism_at(x, stat, msg)
-            if (stat == wa_ok) exit
-         end do
-         if (stat /= wa_ok) then
-            call set_error(stat, "gap mechanism change: the cycle fails at every trial "// &
-               "mu inside the bracket ("//trim(msg)//")", status, errmsg)
-            done = .true.
-            exit bisect
-         end if
-         if (m_x == m_lo) then
-            lo = x
-         else
-            hi = x
-         end if
-      end do bisect
-      if (.not. done) call set_error(wa_not_converged, "gap mechanism change: no "// &
-         "convergence in 200 bisection steps", status, errmsg)
-      mu_change = sqrt(lo*hi)
-      if (present(bracket)) bracket = [lo, hi]
+      call bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, "gap cycle", mu_change, &
+         status, errmsg, bracket)
    contains
       integer function mechanism_at(mu, stat, msg)
          real(wp), intent(in) :: mu

@@ -20,6 +20,7 @@ module wa_loadpath
 
    public :: path_type, load_path, critical_forces, path_from_branch
    public :: stage_loading, stage_unloading, critical_sweep, mechanism_change
+   public :: bisect_mechanism, mechanism_of_mu
    public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
@@ -63,6 +64,18 @@ module wa_loadpath
       integer :: n = 0
       real(wp), allocatable :: xy(:, :)
    end type polyline
+
+
+   abstract interface
+      !> The mechanism (an integer code) at mu, for bisect_mechanism; stat /= wa_ok with a
+      !> message where it cannot be computed.
+      integer function mechanism_of_mu(mu, stat, msg)
+         import :: wp
+         real(wp), intent(in) :: mu
+         integer, intent(out) :: stat
+         character(len=*), intent(inout) :: msg
+      end function mechanism_of_mu
+   end interface
 
 contains
 
@@ -329,6 +342,39 @@ contains
       real(wp), intent(out), optional :: bracket(2)
       real(wp), parameter :: tries(7) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp]
+
+      call bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, "load path", mu_change, &
+         status, errmsg, bracket)
+   contains
+      integer function mechanism_at(mu, stat, msg)
+         real(wp), intent(in) :: mu
+         integer, intent(out) :: stat
+         character(len=*), intent(inout) :: msg
+         type(params_type) :: params
+         type(path_type) :: path
+         mechanism_at = -1
+         msg = ""
+         call new_params(alpha, mu, params, stat, msg)
+         if (stat /= wa_ok) return
+         call load_path(model, params, path, stat, msg)
+         if (stat /= wa_ok) return
+         mechanism_at = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
+      end function mechanism_at
+   end subroutine mechanism_change
+
+   !> The bisection of mechanism_change for any mechanism_at(mu) (gap control's too):
+   !> [mu_lo, mu_hi] narrowed to 1e-10 relative (geometric; arithmetic while the lower end
+   !> is 0), a failing trial mu replaced by the next fraction of the bracket in `tries`;
+   !> `what` names the computation in the messages. mu_change: the bracket's midpoint.
+   subroutine bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, what, mu_change, status, &
+         errmsg, bracket)
+      procedure(mechanism_of_mu) :: mechanism_at
+      real(wp), intent(in) :: mu_lo, mu_hi, tries(:)
+      character(len=*), intent(in) :: what
+      real(wp), intent(out) :: mu_change
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), intent(out), optional :: bracket(2)
       integer, parameter :: max_steps = 200
       character(len=256) :: msg
       real(wp) :: lo, hi, x
@@ -337,6 +383,7 @@ contains
 
       lo = mu_lo; hi = mu_hi
       status = wa_ok
+      msg = ""
       m_lo = mechanism_at(lo, stat, msg)
       if (stat /= wa_ok) then
          call set_error(stat, "mechanism change: mu_lo = "//real_text(lo)//": "//trim(msg), &
@@ -355,7 +402,7 @@ contains
             end do
             if (stat /= wa_ok) then
                call set_error(stat, "mechanism change not located further than ["// &
-                  real_text(lo)//", "//real_text(hi)//"]: the load path fails at every "// &
+                  real_text(lo)//", "//real_text(hi)//"]: the "//what//" fails at every "// &
                   "trial mu inside ("//trim(msg)//")", status, errmsg)
                done = .true.
                exit bisect
@@ -382,22 +429,7 @@ contains
             inside = a + f*(b - a)
          end if
       end function inside
-
-      integer function mechanism_at(mu, stat, msg)
-         real(wp), intent(in) :: mu
-         integer, intent(out) :: stat
-         character(len=*), intent(inout) :: msg
-         type(params_type) :: params
-         type(path_type) :: path
-         mechanism_at = -1
-         msg = ""
-         call new_params(alpha, mu, params, stat, msg)
-         if (stat /= wa_ok) return
-         call load_path(model, params, path, stat, msg)
-         if (stat /= wa_ok) return
-         mechanism_at = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
-      end function mechanism_at
-   end subroutine mechanism_change
+   end subroutine bisect_mechanism
 
    !> A real in ES format with a 3-digit exponent, e.g. 7.9369860901363931E-001.
    pure function real_text(x) result(text)
