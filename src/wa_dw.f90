@@ -193,22 +193,40 @@ contains
       type(contact_geometry), intent(in) :: geo
       real(wp), intent(in) :: u
       real(wp) :: g
-      real(wp) :: c, d2, omc2, inv_lambda
+      real(wp), parameter :: lo = 1.0e-75_wp, hi = 1.0e75_wp
+      real(wp) :: c, d2, omc2, inv_lambda, k, w
 
       call zone_of(geo, exp(u), c, d2, omc2)
       inv_lambda = 2.0_wp*sqrt(geo%one_minus_a2)*sqrt(d2)/params%sigma0   ! (2.25b)
-      g = log(4.0_wp*params%sigma0**2/(pi*params%alpha**2*geo%one_minus_a2)) + log(d2) &
-         + log(istar_scaled(geo%a, c, d2, omc2)) + log1p(inv_lambda)
+      k = 4.0_wp*params%sigma0**2/(pi*params%alpha**2*geo%one_minus_a2)
+      w = istar_scaled(geo%a, c, d2, omc2)
+      ! one logarithm of the product where no factor can make it overflow or underflow
+      if (min(k, d2, w) >= lo .and. max(k, d2, w, inv_lambda) <= hi) then
+         g = log(k*d2*w*(1.0_wp + inv_lambda))
+      else
+         g = log(k) + log(d2) + log(w) + log1p(inv_lambda)
+      end if
    end function residual
 
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
       type(contact_geometry) :: geo
+      real(wp) :: x
       geo%a_star = a_star
-      geo%a = sin(pi*a_star)
-      geo%cos_a = sin(pi*(0.5_wp - a_star))
-      geo%one_minus_a = 2.0_wp*sin(0.5_wp*pi*(0.5_wp - a_star))**2   ! 1 - sin = 2 sin^2((pi/2 - x)/2)
+      ! one sin/cos pair (one sincos call) of the smaller angle, so that both the sine
+      ! and the cosine of pi a* keep their relative accuracy: cos(pi a*) = sin(pi (1/2 - a*))
+      ! with 1/2 - a* exact for a* >= 1/4
+      if (a_star <= 0.25_wp) then
+         x = pi*a_star
+         geo%a = sin(x)
+         geo%cos_a = cos(x)
+      else
+         x = pi*(0.5_wp - a_star)
+         geo%a = cos(x)
+         geo%cos_a = sin(x)
+      end if
       geo%one_minus_a2 = geo%cos_a**2
+      geo%one_minus_a = geo%one_minus_a2/(1.0_wp + geo%a)       ! 1 - A = (1 - A^2)/(1 + A)
    end function geometry
 
    !> C, C^2 - A^2 and 1 - C^2 from s without cancellation.
