@@ -49,7 +49,8 @@ module wa_md
    public :: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, md_midgap_opening
    public :: md_curve_residual, md_curve_state
 
-   !> sin and cos of pi a*, the opening at c* = 1/2 and the scan range in x = ln tan s.
+   !> sin and cos of pi a*; for the root scan of `solve` (add_scan_limits) also the
+   !> opening at c* = 1/2 and the scan range in x = ln tan s.
    type :: md_geometry
       real(wp) :: a_star = 0.0_wp
       !> A = sin(pi a*), q = cos(pi a*) (from 1/2 - a*, exact near a* = 1/2)
@@ -85,6 +86,11 @@ module wa_md
    !> Split point r_s = y_s = 1/sqrt 2 of the Psi_c integral.
    real(wp), parameter :: y_split = 0.70710678118654752440_wp
 
+   !> ln of the level nodes, of y_s, 2 and 4; the largest y^2 summed as a series in
+   !> log_half_one_plus_root (the levels below the first, y <= y_s/4)
+   real(wp), parameter :: log_split = -0.34657359027997265471_wp, &
+      log_2 = 0.69314718055994530942_wp, log_4 = 1.38629436111989061883_wp, &
+      v_series = 1.0_wp/32.0_wp
    !> Inner nodes r^2, r in (0, 1/sqrt 2)
    real(wp), parameter :: inner_r2(14) = [ &
       2.35167379832051038133e-5_wp, &
@@ -135,6 +141,10 @@ module wa_md
       9.49611700895436903955e-1_wp, &
       9.79215633652462216029e-1_wp, &
       9.96025350621868724724e-1_wp]
+   real(wp), parameter :: log_eta(16) = log(level_eta)
+   !> ln((1 + r)/y), r = sqrt(1 - y^2), at the nodes y = y_s eta of the first level
+   real(wp), parameter :: log_first(16) = log((1.0_wp + sqrt(1.0_wp - (y_split*level_eta)**2)) &
+      /(y_split*level_eta))
    !> Level weights on [1/4, 1]
    real(wp), parameter :: level_w(16) = [ &
       1.01821722794077855694e-2_wp, &
@@ -167,6 +177,9 @@ module wa_md
       8.93145509116523342366e-1_wp, &
       9.55553536844592276975e-1_wp, &
       9.91460945011572580631e-1_wp]
+   !> ln(1 + r) - ln y_s at the tail's u nodes y = y_s u when the tail starts at y_s
+   real(wp), parameter :: log_tail_top(12) = log((1.0_wp + sqrt(1.0_wp - (y_split*tail_u)**2)) &
+      /y_split)
    !> Tail weights, weight u on [0, 1]
    real(wp), parameter :: tail_uw(12) = [ &
       7.75182220938028357246e-4_wp, &
@@ -372,7 +385,11 @@ contains
          top = (0.5_wp - geo%a_star)*(1.0_wp - exp(v))
       end if
       rm1 = sin(pi*gap)/(geo%a*sin(pi*top))
-      x = min(x_limit, 0.5_wp*(log(rm1) + log(rm1 + 2.0_wp)))
+      if (rm1 >= 1.0e-150_wp .and. rm1 <= 1.0e150_wp) then      ! one logarithm: no overflow
+         x = min(x_limit, 0.5_wp*log(rm1*(rm1 + 2.0_wp)))
+      else
+         x = min(x_limit, 0.5_wp*(log(rm1) + log(rm1 + 2.0_wp)))
+      end if
    end function x_of_v
 
    ! ------------------------------------------------------------ the solver
@@ -404,6 +421,7 @@ contains
          return
       end if
       geo = geometry(a_star)
+      call add_scan_limits(geo)
       if (a_star == 0.5_wp .or. params%sigma0 == 0.0_wp) then
          n_states = 1
          states(1) = case2_state(params, geo)
@@ -675,7 +693,7 @@ contains
       real(wp) :: delta
       type(md_zone) :: z
       if (x >= x_limit) then
-         delta = geo%opening_top
+         delta = top_opening(geo%a, geo%q)
          return
       end if
       z = zone_at(geo, x)
@@ -752,7 +770,7 @@ contains
    pure function k_outer(z) result(total)
       type(md_zone), intent(in) :: z
       real(wp) :: total
-      real(wp) :: top, part, y, y2, r
+      real(wp) :: top, part, y, y2, r, log_top
       integer :: m, j, i
 
       m = 0
@@ -761,38 +779,72 @@ contains
       top = y_split
       do j = 1, m
          part = 0.0_wp
-         do i = 1, size(level_eta)
-            y = top*level_eta(i)
-            y2 = y*y
-            r = sqrt(1.0_wp - y2)
-            part = part + level_w(i)*log((1.0_wp + r)/y)*y*kernel(z, y2)
-         end do
+         if (j == 1) then
+            do i = 1, size(level_eta)
+               y = top*level_eta(i)
+               part = part + level_w(i)*log_first(i)*y*kernel(z, y*y)
+            end do
+         else
+            ! ln((1+r)/y) = ln 2 + ln((1+r)/2) - ln(top) - ln(eta): positive terms, no
+            ! logarithm per node
+            log_top = log_split - real(j - 1, wp)*log_4
+            do i = 1, size(level_eta)
+               y = top*level_eta(i)
+               y2 = y*y
+               part = part + level_w(i)*(log_2 + log_half_one_plus_root(y2) - log_top &
+                  - log_eta(i))*y*kernel(z, y2)
+            end do
+         end if
          total = total + top*part
          top = 0.25_wp*top
       end do
-      total = total + k_tail(z, top)
+      total = total + k_tail(z, top, log_split - real(m, wp)*log_4)
    end function k_outer
 
    !> int_0^d (ln(1+r) - ln y) y kernel dy with the Gauss rules for u and -u ln u.
-   pure function k_tail(z, d) result(total)
+   pure function k_tail(z, d, log_d) result(total)
       type(md_zone), intent(in) :: z
-      real(wp), intent(in) :: d
+      !> d and ln d
+      real(wp), intent(in) :: d, log_d
       real(wp) :: total
-      real(wp) :: y, log_d, part_u, part_l
+      real(wp) :: y, part_u, part_l
       integer :: i
 
-      log_d = log(d)
       part_u = 0.0_wp
       part_l = 0.0_wp
       do i = 1, size(tail_u)
          y = d*tail_u(i)
-         part_u = part_u + tail_uw(i)*(log(1.0_wp + sqrt(1.0_wp - y*y)) - log_d) &
-            *kernel(z, y*y)
+         if (d == y_split) then
+            part_u = part_u + tail_uw(i)*log_tail_top(i)*kernel(z, y*y)
+         else if (d**2 > v_series) then
+            part_u = part_u + tail_uw(i)*(log(1.0_wp + sqrt(1.0_wp - y*y)) - log_d) &
+               *kernel(z, y*y)
+         else
+            part_u = part_u + tail_uw(i)*(log_2 + log_half_one_plus_root(y*y) - log_d) &
+               *kernel(z, y*y)
+         end if
          y = d*tail_l(i)
          part_l = part_l + tail_lw(i)*kernel(z, y*y)
       end do
       total = d*d*(part_u + part_l)
    end function k_tail
+
+   !> ln((1 + sqrt(1 - v))/2) = -(1/2) sum_(n>=1) binom(2n, n) v^n/(n 4^n) for
+   !> 0 <= v <= v_series = 1/32: 11 terms, the first omitted below 1e-18.
+   pure function log_half_one_plus_root(v) result(l)
+      real(wp), intent(in) :: v
+      real(wp) :: l
+      real(wp), parameter :: c(11) = [-1.0_wp/4.0_wp, -3.0_wp/32.0_wp, -5.0_wp/96.0_wp, &
+         -35.0_wp/1024.0_wp, -63.0_wp/2560.0_wp, -77.0_wp/4096.0_wp, -429.0_wp/28672.0_wp, &
+         -6435.0_wp/524288.0_wp, -12155.0_wp/1179648.0_wp, -46189.0_wp/5242880.0_wp, &
+         -88179.0_wp/11534336.0_wp]
+      integer :: n
+      l = c(11)
+      do n = 10, 1, -1
+         l = c(n) + v*l
+      end do
+      l = v*l
+   end function log_half_one_plus_root
 
    !> 1/((1 - k^2 + k^2 y^2) sqrt(cos^2 s + sin^2 s y^2))
    pure function kernel(z, y2) result(g)
@@ -809,17 +861,32 @@ contains
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
       type(md_geometry) :: geo
-      real(wp) :: tan_a
+      real(wp) :: x
       geo%a_star = a_star
-      geo%a = sin(pi*a_star)
-      geo%q = sin(pi*(0.5_wp - a_star))
+      ! one sin/cos pair of the smaller angle (one sincos call): cos(pi a*) =
+      ! sin(pi (1/2 - a*)) with 1/2 - a* exact for a* >= 1/4
+      if (a_star <= 0.25_wp) then
+         x = pi*a_star
+         geo%a = sin(x)
+         geo%q = cos(x)
+      else
+         x = pi*(0.5_wp - a_star)
+         geo%a = cos(x)
+         geo%q = sin(x)
+      end if
+   end function geometry
+
+   !> The fields of geo that only the root scan of `solve` needs.
+   pure subroutine add_scan_limits(geo)
+      type(md_geometry), intent(inout) :: geo
+      real(wp) :: tan_a
       geo%opening_top = top_opening(geo%a, geo%q)
       tan_a = geo%a/geo%q
       ! 1/2 - c* ~ 1/(pi tan(pi a*) R): below 0.01 and 0.02 (1/2 - a*) beyond x_mono,
       ! below 2^-56 at x_top
       geo%x_mono = log(max(50.0_wp, 32.0_wp/tan_a))
       geo%x_top = min(x_limit, max(geo%x_mono + 1.0_wp, log(2.0_wp**56/(pi*tan_a))))
-   end function geometry
+   end subroutine add_scan_limits
 
    !> T = e^x, R, sin s, cos s, k = q sin s, 1 - k^2 = cos^2 s + A^2 sin^2 s, artanh k.
    pure function zone_at(geo, x) result(z)

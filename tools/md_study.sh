@@ -11,11 +11,11 @@ work=${TMPDIR:-/tmp}/wa_md_study.$$
 mkdir -p "$work"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-for m in wa_kinds wa_status wa_validate wa_params wa_state wa_math wa_roots wa_gsl wa_md; do
+for m in wa_kinds wa_status wa_validate wa_params wa_state wa_math wa_roots wa_gsl wa_separation wa_md; do
    gfortran -O2 -c "$root/src/$m.f90"
 done
 gfortran -O2 -c "$root/study/wa_psi_methods.f90"      # the Psi_c alternatives, shared with study/
-objs="wa_kinds.o wa_status.o wa_validate.o wa_params.o wa_state.o wa_math.o wa_roots.o wa_gsl.o wa_md.o wa_psi_methods.o"
+objs="wa_kinds.o wa_status.o wa_validate.o wa_params.o wa_state.o wa_math.o wa_roots.o wa_gsl.o wa_separation.o wa_md.o wa_psi_methods.o"
 [ $# -eq 0 ] && set -- study timing
 for what in "$@"; do
    case $what in
