@@ -17,7 +17,7 @@ module wa_gappath
    use wa_models, only: model_roots, max_model_roots
    use wa_separation, only: state_mean_gap, md_no_contact_state, dw_state_gbar, md_state_gbar
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight, &
-      curve_case2_load
+      curve_case2_load, curve_y_max
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
       event_a_turn, event_jump_start, event_jump_end, event_full_contact_reached
    use wa_loadpath, only: path_type
@@ -358,6 +358,83 @@ contains
       end subroutine push
    end subroutine build_chain
 
+   !> Case-1 intervals that end (or start) at a switch to c* = 1/2 with a* nearly constant
+   !> (a fold of P* within round-off of the switch: the tracer's step is small in
+   !> (a*, w y), while c* runs to 1/2): gbar* can turn twice inside such an interval, a
+   !> pair of extrema that no chain point shows (MD, small alpha: the gap cycle's inner
+   !> jumps then came and went with mu). gbar* is sampled at n_samples curve variables
+   !> y across the interval (y = y_max at the switch) and the samples where it turns join
+   !> the chain, so that locate_extrema finds and refines the pair.
+   subroutine sample_switch_intervals(model, params, ch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(inout) :: ch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, parameter :: n_samples = 8
+      type(state_type) :: st(0:n_samples + 1)
+      real(wp) :: ys(0:n_samples + 1), y0, y1
+      integer :: i, k, n_turn, turn(n_samples), j_in, j_sw
+      logical :: steep
+
+      status = wa_ok
+      if (.not. (model == model_dw .or. model == model_md) .or. params%sigma0 <= 0.0_wp) &
+         return
+      i = 1
+      do while (i < ch%n)
+         ! j_in: the case-1 end of the interval, j_sw: its switch end
+         j_in = 0
+         if (ch%event(i + 1) == event_switch .and. ch%zone(i) == zone_inside) then
+            j_in = i; j_sw = i + 1
+         else if (ch%event(i) == event_switch .and. ch%zone(i + 1) == zone_inside) then
+            j_in = i + 1; j_sw = i
+         end if
+         steep = .false.
+         if (j_in > 0) steep = abs(ch%a(i + 1) - ch%a(i)) < &
+            curve_weight(model)*abs(curve_y_max - ch%y(j_in))
+         if (.not. steep) then
+            i = i + 1
+            cycle
+         end if
+         y0 = merge(ch%y(i), curve_y_max, j_in == i)
+         y1 = merge(ch%y(i + 1), curve_y_max, j_in == i + 1)
+         st(0) = chain_state(ch, i)
+         st(n_samples + 1) = chain_state(ch, i + 1)
+         do k = 1, n_samples
+            ys(k) = y0 + (y1 - y0)*real(k, wp)/real(n_samples + 1, wp)
+            call solve_at_y(model, params, ch, i, ys(k), st(k), status, errmsg)
+            if (status /= wa_ok) return
+         end do
+         n_turn = 0
+         do k = 1, n_samples
+            if ((st(k)%gbar - st(k - 1)%gbar)*(st(k + 1)%gbar - st(k)%gbar) < 0.0_wp) then
+               n_turn = n_turn + 1
+               turn(n_turn) = k
+            end if
+         end do
+         do k = n_turn, 1, -1                    ! insert after i, last first
+            call insert_after(i, st(turn(k)), ys(turn(k)))
+         end do
+         i = i + n_turn + 1
+      end do
+   contains
+      subroutine insert_after(at, sx, yx)
+         integer, intent(in) :: at
+         type(state_type), intent(in) :: sx
+         real(wp), intent(in) :: yx
+         ch%a = [ch%a(:at), sx%a_star, ch%a(at + 1:)]
+         ch%c = [ch%c(:at), sx%c_star, ch%c(at + 1:)]
+         ch%p = [ch%p(:at), sx%p_star, ch%p(at + 1:)]
+         ch%g = [ch%g(:at), sx%gbar, ch%g(at + 1:)]
+         ch%y = [ch%y(:at), yx, ch%y(at + 1:)]
+         ch%zone = [ch%zone(:at), zone_inside, ch%zone(at + 1:)]
+         ch%event = [ch%event(:at), 0, ch%event(at + 1:)]
+         ch%extremum = [ch%extremum(:at), .false., ch%extremum(at + 1:)]
+         ch%stable_after = [ch%stable_after(:at), .false., ch%stable_after(at + 1:)]
+         ch%n = ch%n + 1
+      end subroutine insert_after
+   end subroutine sample_switch_intervals
+
    !> Mark the extrema of gbar* along the chain (refined to full precision where smooth)
    !> and the stability of each stretch: stable on the last, flipped at each extremum.
    subroutine locate_extrema(model, params, ch, status, errmsg)
@@ -587,6 +664,8 @@ contains
       if (status /= wa_ok) return
       path%g_touch = 1.0_wp
       if (ch%joined) path%g_touch = ch%g(1)
+      call sample_switch_intervals(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
       call locate_extrema(model, params, ch, status, errmsg)
       if (status /= wa_ok) return
       call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)

@@ -28,7 +28,8 @@ contains
          new_unittest("westergaard_gap_law", test_westergaard_law), &
          new_unittest("gap_law_loop_is_the_energy", test_law_energy), &
          new_unittest("gap_law_bad_input", test_law_bad_input), &
-         new_unittest("load_jump_energies", test_load_jump_energies)]
+         new_unittest("load_jump_energies", test_load_jump_energies), &
+         new_unittest("md_gbar_pair_before_switch", test_pair_before_switch)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -143,6 +144,25 @@ contains
          end do
       end do
    end subroutine test_jumps
+
+   !> MD alpha 0.036123: the fold of P* lies within 1e-13 in a* of the switch to c* = 1/2
+   !> while c* still runs from 0.4977 to 1/2, and gbar* turns twice in that one interval
+   !> of the trace (a pair, 1e-5 high). Without the interval's samples the inner jumps of
+   !> the gap cycle vanished at mu = 0.01805 and 0.01808 and came back at 0.0181.
+   subroutine test_pair_before_switch(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: mus(4) = [0.018_wp, 0.01805_wp, 0.01808_wp, 0.0181_wp]
+      type(params_type) :: params
+      integer :: k, status, ma, mr
+      character(len=80) :: what
+      do k = 1, size(mus)
+         call new_params(0.036123_wp, mus(k), params, status)
+         call gap_mechanisms(model_md, params, ma, mr, status)
+         write (what, '(a,f8.5)') "MD alpha 0.036123 inner jumps both ways at mu ", mus(k)
+         call check(error, status == wa_ok .and. ma == 2 .and. mr == 2, trim(what))
+         if (allocated(error)) return
+      end do
+   end subroutine test_pair_before_switch
 
    subroutine test_md_events(error)
       type(error_type), allocatable, intent(out) :: error
