@@ -374,7 +374,7 @@ contains
       integer, parameter :: n_samples = 8
       type(state_type) :: st(0:n_samples + 1)
       real(wp) :: ys(0:n_samples + 1), y0, y1
-      integer :: i, k, n_turn, turn(n_samples), j_in, j_sw
+      integer :: i, k, n_turn, turn(n_samples), j_in
       logical :: steep
 
       status = wa_ok
@@ -382,12 +382,11 @@ contains
          return
       i = 1
       do while (i < ch%n)
-         ! j_in: the case-1 end of the interval, j_sw: its switch end
-         j_in = 0
+         j_in = 0                                ! the case-1 end of the interval
          if (ch%event(i + 1) == event_switch .and. ch%zone(i) == zone_inside) then
-            j_in = i; j_sw = i + 1
+            j_in = i
          else if (ch%event(i) == event_switch .and. ch%zone(i + 1) == zone_inside) then
-            j_in = i + 1; j_sw = i
+            j_in = i + 1
          end if
          steep = .false.
          if (j_in > 0) steep = abs(ch%a(i + 1) - ch%a(i)) < &

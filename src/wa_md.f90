@@ -770,7 +770,7 @@ contains
    pure function k_outer(z) result(total)
       type(md_zone), intent(in) :: z
       real(wp) :: total
-      real(wp) :: top, part, y, y2, r, log_top
+      real(wp) :: top, part, y, y2, log_top
       integer :: m, j, i
 
       m = 0
