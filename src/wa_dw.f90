@@ -15,7 +15,7 @@ module wa_dw
    use wa_elliptic, only: istar_scaled
    use wa_kernels, only: wavy_gap_shape
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_math, only: log1p
+   use wa_math, only: log1p, sincos_pi
    use wa_separation, only: dw_mean_gap
    implicit none
    private
@@ -211,20 +211,8 @@ contains
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
       type(contact_geometry) :: geo
-      real(wp) :: x
       geo%a_star = a_star
-      ! one sin/cos pair (one sincos call) of the smaller angle, so that both the sine
-      ! and the cosine of pi a* keep their relative accuracy: cos(pi a*) = sin(pi (1/2 - a*))
-      ! with 1/2 - a* exact for a* >= 1/4
-      if (a_star <= 0.25_wp) then
-         x = pi*a_star
-         geo%a = sin(x)
-         geo%cos_a = cos(x)
-      else
-         x = pi*(0.5_wp - a_star)
-         geo%a = cos(x)
-         geo%cos_a = sin(x)
-      end if
+      call sincos_pi(a_star, geo%a, geo%cos_a)
       geo%one_minus_a2 = geo%cos_a**2
       geo%one_minus_a = geo%one_minus_a2/(1.0_wp + geo%a)       ! 1 - A = (1 - A^2)/(1 + A)
    end function geometry

@@ -1,10 +1,10 @@
 !> Elementary functions Fortran lacks, written to keep full relative accuracy.
 module wa_math
-   use wa_kinds, only: wp
+   use wa_kinds, only: wp, pi
    implicit none
    private
 
-   public :: log1p
+   public :: log1p, sincos_pi
 
 contains
 
@@ -20,5 +20,23 @@ contains
          y = log(u)*(x/(u - 1.0_wp))
       end if
    end function log1p
+
+   !> sin(pi x) and cos(pi x) for x in [0, 1/2], both to full relative accuracy, from one
+   !> sin/cos pair of the smaller angle (one sincos call): cos(pi x) = sin(pi (1/2 - x)),
+   !> with 1/2 - x exact for x >= 1/4.
+   elemental subroutine sincos_pi(x, s, c)
+      real(wp), intent(in) :: x
+      real(wp), intent(out) :: s, c
+      real(wp) :: angle
+      if (x <= 0.25_wp) then
+         angle = pi*x
+         s = sin(angle)
+         c = cos(angle)
+      else
+         angle = pi*(0.5_wp - x)
+         s = cos(angle)
+         c = sin(angle)
+      end if
+   end subroutine sincos_pi
 
 end module wa_math

@@ -41,7 +41,7 @@ module wa_md
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_math, only: log1p
+   use wa_math, only: log1p, sincos_pi
    use wa_separation, only: md_state_gbar
    implicit none
    private
@@ -861,19 +861,8 @@ contains
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
       type(md_geometry) :: geo
-      real(wp) :: x
       geo%a_star = a_star
-      ! one sin/cos pair of the smaller angle (one sincos call): cos(pi a*) =
-      ! sin(pi (1/2 - a*)) with 1/2 - a* exact for a* >= 1/4
-      if (a_star <= 0.25_wp) then
-         x = pi*a_star
-         geo%a = sin(x)
-         geo%q = cos(x)
-      else
-         x = pi*(0.5_wp - a_star)
-         geo%a = cos(x)
-         geo%q = sin(x)
-      end if
+      call sincos_pi(a_star, geo%a, geo%q)
    end function geometry
 
    !> The fields of geo that only the root scan of `solve` needs.

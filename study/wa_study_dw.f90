@@ -14,7 +14,7 @@ module wa_study_dw
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
    use wa_elliptic, only: istar_scaled, istar_carlson, istar_quadrature, ia_star
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_math, only: log1p
+   use wa_math, only: log1p, sincos_pi
    use wa_gsl, only: gsl_function, gsl_integration_workspace_alloc, &
       gsl_integration_workspace_free, gsl_integration_qag
    implicit none
@@ -157,17 +157,8 @@ contains
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
       type(contact_geometry) :: geo
-      real(wp) :: x
       geo%a_star = a_star
-      if (a_star <= 0.25_wp) then
-         x = pi*a_star
-         geo%a = sin(x)
-         geo%cos_a = cos(x)
-      else
-         x = pi*(0.5_wp - a_star)
-         geo%a = cos(x)
-         geo%cos_a = sin(x)
-      end if
+      call sincos_pi(a_star, geo%a, geo%cos_a)
       geo%one_minus_a2 = geo%cos_a**2
       geo%one_minus_a = geo%one_minus_a2/(1.0_wp + geo%a)
    end function geometry
