@@ -131,9 +131,9 @@ contains
       end function in_contact
    end subroutine gap_mechanisms_from_branch
 
-   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the gap
-   !> approach (which = 3) or retraction (which = 4) mechanism changes, to 1e-10 relative
-   !> (geometric bisection): the gap-control counterpart of mechanism_change; where the
+   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends, else wa_no_solution) to
+   !> where the gap approach (which = 3) or retraction (which = 4) mechanism changes, to
+   !> 1e-10 relative (geometric bisection): the gap-control counterpart of mechanism_change; where the
    !> cycle fails at a trial mu, 14 other points of the bracket are tried in turn.
    subroutine gap_mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, &
          errmsg, bracket)

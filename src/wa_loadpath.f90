@@ -6,7 +6,7 @@
 module wa_loadpath
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf, ieee_quiet_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, set_error, wa_numerical_error, wa_not_converged
+   use wa_status, only: wa_ok, wa_no_solution, set_error, wa_numerical_error, wa_not_converged
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
@@ -325,9 +325,9 @@ contains
          " rows failed; their forces are NaN)", status, errmsg)
    end subroutine critical_sweep
 
-   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends) to where the
-   !> full-contact (which = 1) or pull-off (which = 2) mechanism changes, to 1e-10 relative
-   !> (geometric bisection; arithmetic while the lower end is 0). A trial mu where the load
+   !> Bisect mu in [mu_lo, mu_hi] (mechanisms differ at the ends, else wa_no_solution) to
+   !> where the full-contact (which = 1) or pull-off (which = 2) mechanism changes, to 1e-10
+   !> relative (geometric bisection; arithmetic while the lower end is 0). A trial mu where the load
    !> path fails is replaced by other points of the bracket (at 1/4, 3/4, 1/8, 7/8, 1/16,
    !> 15/16 of it); when all of them fail too, or after 200 steps, the bisection stops with
    !> wa_not_converged: `bracket` (optional) receives the interval still known to hold the
@@ -378,17 +378,27 @@ contains
       integer, parameter :: max_steps = 200
       character(len=256) :: msg
       real(wp) :: lo, hi, x
-      integer :: m_lo, m_x, step, k, stat
+      integer :: m_lo, m_hi, m_x, step, k, stat
       logical :: done
 
       lo = mu_lo; hi = mu_hi
       status = wa_ok
       msg = ""
       m_lo = mechanism_at(lo, stat, msg)
-      if (stat /= wa_ok) then
+      if (stat == wa_ok) then
+         m_hi = mechanism_at(hi, stat, msg)
+         if (stat /= wa_ok) then
+            call set_error(stat, "mechanism change: mu_hi = "//real_text(hi)//": "// &
+               trim(msg), status, errmsg)
+         else if (m_hi == m_lo) then     ! no change (or an even number) in the bracket
+            call set_error(wa_no_solution, "mechanism change: the "//what//" has the "// &
+               "same mechanism at mu_lo and mu_hi, so no change is bracketed", status, errmsg)
+         end if
+      else
          call set_error(stat, "mechanism change: mu_lo = "//real_text(lo)//": "//trim(msg), &
             status, errmsg)
-      else
+      end if
+      if (status == wa_ok) then
          done = .false.
          bisect: do step = 1, max_steps
             done = .not. (hi - lo > 1.0e-10_wp*hi)

@@ -22,8 +22,26 @@ contains
          new_unittest("dw_gap_points_equal_gap_mechanism_change_20_alpha", test_dw_gap_points), &
          new_unittest("md_gap_points_equal_gap_mechanism_change", test_md_gap_points), &
          new_unittest("gap_codes_and_meanings", test_gap_codes), &
-         new_unittest("gap_regions_match_boundaries", test_gap_regions)]
+         new_unittest("gap_regions_match_boundaries", test_gap_regions), &
+         new_unittest("bisection_needs_a_change", test_no_change)]
    end subroutine collect_map
+
+   !> A bracket with the same mechanism at both ends holds no change to bisect: status
+   !> wa_no_solution, not its upper end with an OK status (as before).
+   subroutine test_no_change(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: mu
+      integer :: status
+      call mechanism_change(model_dw, 0.3_wp, 1, 0.01_wp, 0.02_wp, mu, status)
+      call check(error, status == wa_no_solution, "load control: no change in [0.01, 0.02]")
+      if (allocated(error)) return
+      call gap_mechanism_change(model_md, 0.3_wp, 3, 0.1_wp, 0.158_wp, mu, status)
+      call check(error, status == wa_no_solution, "gap control: no change in [0.1, 0.158]")
+      if (allocated(error)) return
+      call gap_mechanism_change(model_md, 0.3_wp, 3, 0.158_wp, 0.16_wp, mu, status)
+      call check(error, status == wa_ok .and. abs(mu/0.1589_wp - 1.0_wp) < 1.0e-3_wp, &
+         "gap control: 302 in [0.158, 0.16]")
+   end subroutine test_no_change
 
    !> 20 alpha over [0.01, 10]: every boundary point on the grid, rebisected by
    !> mechanism_change from a bracket of +-1e-7 around it, agrees to 1e-8 relative, on
