@@ -85,6 +85,9 @@ module wa_branch
    end type curve_point
 
    integer, parameter :: max_newton = 12
+   !> |F| at which the corrector's point is on the curve to rounding (F is a logarithm of
+   !> O(1) ratios: its own rounding is a few epsilon)
+   real(wp), parameter :: f_floor = 4.0_wp*epsilon(1.0_wp)
    !> What fold_before_switch found: a fold (pushed), or a turn of P* within round-off
    !> of the switch (the corner is the extremum)
    integer, parameter :: turn_pushed = 0, turn_at_switch = 2
@@ -514,7 +517,11 @@ contains
          if (det == 0.0_wp) return
          dz = [(-f*p%t(2) + r2*g(2))/det, (-g(1)*r2 + p%t(1)*f)/det]
          z = z + dz
-         if (norm2(dz) <= 1.0e-14_wp*max(1.0_wp, norm2(z))) then
+         ! converged; or F at its rounding floor where the gradient is small (MD near a
+         ! reconnection of the case-1 curve: |grad F| ~ 1e-2), which keeps the steps at
+         ! ~1e-14 however small h is
+         if (norm2(dz) <= 1.0e-14_wp*max(1.0_wp, norm2(z)) .or. (abs(f) <= f_floor .and. &
+            norm2(dz) <= 1.0e-12_wp*max(1.0_wp, norm2(z)))) then
             ok = .true.
             exit
          end if

@@ -612,7 +612,7 @@ contains
       integer, parameter :: max_points = 4096
       real(wp) :: x(max_points), y(max_points), a(max_points)
       real(wp) :: t, err, pred, h, xt, delta
-      integer :: n, k, kind, iter
+      integer :: n, k, kind, iter, k_failed
       logical :: on_grid, approaching, refined(max_points)
 
       n = 1
@@ -626,6 +626,7 @@ contains
       curve%end_kind = map_end_grid
       k = j + dir
       k_last = j
+      k_failed = 0
       do iter = 1, 100000
          if (k < 1 .or. k > size(alpha) .or. n == max_points) exit
          xt = log(alpha(k))
@@ -642,6 +643,13 @@ contains
             curve%end_kind = kind
             approaching = .true.
             if (h < tol_alpha*max(1.0_wp, abs(x(n)))) exit
+            ! the path fails again at this grid alpha (MD: the trace fails within ~2e-7 in
+            ! mu of a reconnection of the case-1 curve): the curve ends here, rather than
+            ! after every halving of the step has retried it (~50 paths each)
+            if (kind == map_end_failed .and. on_grid) then
+               if (k == k_failed) exit
+               k_failed = k
+            end if
             cycle
          end if
          curve%end_kind = map_end_grid
