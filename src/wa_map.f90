@@ -633,7 +633,7 @@ contains
          on_grid = abs(xt - x(n)) <= h
          if (.not. on_grid) xt = x(n) + dir*h
          pred = extrapolate(x, y, n, xt)
-         delta = max(4.0_wp*err, 1.0e-7_wp)
+         delta = max(4.0_wp*err, 5.0_wp*tol_t)
          if (n < 3) delta = 1.0e-3_wp
          ! off the grid after a failed step only whether the curve is there matters
          call locate(tr, exp(xt), pred, delta, t, kind, &
