@@ -611,7 +611,8 @@ contains
       integer, intent(out) :: k_last
       integer, parameter :: max_points = 4096
       real(wp) :: x(max_points), y(max_points), a(max_points)
-      real(wp) :: t, err, pred, h, xt, delta
+      real(wp) :: t, err, pred, h, xt, delta, preds(2:3), errs(2:3)
+      integer :: order
       integer :: n, k, kind, iter, k_failed
       logical :: on_grid, approaching, refined(max_points)
 
@@ -627,12 +628,15 @@ contains
       k = j + dir
       k_last = j
       k_failed = 0
+      order = 2
       do iter = 1, 100000
          if (k < 1 .or. k > size(alpha) .or. n == max_points) exit
          xt = log(alpha(k))
          on_grid = abs(xt - x(n)) <= h
          if (.not. on_grid) xt = x(n) + dir*h
-         pred = extrapolate(x, y, n, xt)
+         ! quadratic or cubic in (ln alpha, ln mu), whichever predicted the last point better
+         preds = [extrapolate(x, y, n, xt, 2), extrapolate(x, y, n, xt, 3)]
+         pred = preds(order)
          delta = max(4.0_wp*err, 5.0_wp*tol_t)
          if (n < 3) delta = 1.0e-3_wp
          ! off the grid after a failed step only whether the curve is there matters
@@ -658,7 +662,11 @@ contains
          a(n) = merge(alpha(k), exp(xt), on_grid)
          y(n) = t
          refined(n) = .not. (approaching .and. .not. on_grid)
-         if (n >= 4 .and. refined(n)) err = abs(t - pred)
+         if (n >= 4 .and. refined(n)) then
+            errs = abs(t - preds)
+            order = merge(3, 2, errs(3) < errs(2))
+            err = errs(order)
+         end if
          h = 2.0_wp*h
          if (on_grid) then
             k_last = k
@@ -678,23 +686,23 @@ contains
       curve%mu = exp(pack(y(1:n), refined(1:n)))
    end subroutine continue_curve
 
-   !> ln mu at x = ln alpha from the last (up to) three points: a quadratic.
-   pure real(wp) function extrapolate(x, y, n, xq)
+   !> ln mu at x = ln alpha from the last (up to) degree + 1 points: a polynomial of that
+   !> degree (Neville).
+   pure real(wp) function extrapolate(x, y, n, xq, degree)
       real(wp), intent(in) :: x(:), y(:), xq
-      integer, intent(in) :: n
-      real(wp) :: l0, l1, l2
-      if (n == 1) then
-         extrapolate = y(1)
-      else if (n == 2) then
-         extrapolate = y(2) + (y(2) - y(1))*(xq - x(2))/(x(2) - x(1))
-      else
-         associate (x0 => x(n - 2), x1 => x(n - 1), x2 => x(n))
-            l0 = (xq - x1)*(xq - x2)/((x0 - x1)*(x0 - x2))
-            l1 = (xq - x0)*(xq - x2)/((x1 - x0)*(x1 - x2))
-            l2 = (xq - x0)*(xq - x1)/((x2 - x0)*(x2 - x1))
-            extrapolate = l0*y(n - 2) + l1*y(n - 1) + l2*y(n)
-         end associate
-      end if
+      integer, intent(in) :: n, degree
+      real(wp) :: p(4)
+      integer :: m, i, k, lo
+      m = min(n, degree + 1, 4)
+      lo = n - m
+      p(1:m) = y(lo + 1:n)
+      do k = 1, m - 1
+         do i = 1, m - k
+            p(i) = ((xq - x(lo + i + k))*p(i) + (x(lo + i) - xq)*p(i + 1)) &
+               /(x(lo + i) - x(lo + i + k))
+         end do
+      end do
+      extrapolate = p(1)
    end function extrapolate
 
    !> The change of the tracker's kind near ln mu = t_pred at alpha: bracket it with
