@@ -447,10 +447,13 @@ contains
 
    !> A finer scan of ln mu in [t_c - w, t_c + w] (and inside the map's mu range) at
    !> alpha(j), where a curve ended: finds the curves it turns into or meets there.
-   recursive subroutine local_scan(map, j, t_c, w)
+   recursive subroutine local_scan(map, j, t_c, w, control)
       type(map_type), intent(inout) :: map
       integer, intent(in) :: j
       real(wp), intent(in) :: t_c, w
+      !> map_control_load or map_control_gap: the control of the curve that ended (the
+      !> curves it turns into or meets are of the same control)
+      integer, intent(in) :: control
       integer, parameter :: n = 24
       type(probe_type) :: pr
       real(wp) :: t(n), lo, hi
@@ -460,7 +463,7 @@ contains
       if (.not. hi > lo) return
       do i = 1, n
          t(i) = lo + (hi - lo)*real(i - 1, wp)/real(n - 1, wp)
-         call probe(map%model, map%alpha(j), t(i), pr, map%control)
+         call probe(map%model, map%alpha(j), t(i), pr, control)
          mech(:, i) = pr%mech
       end do
       map%n_paths = map%n_paths + n
@@ -562,7 +565,7 @@ contains
          integer :: i, m, kk
          t_end = log(piece%mu(piece%n))
          if (k + dir >= 1 .and. k + dir <= size(map%alpha)) &
-            call local_scan(map, k + dir, t_end, 0.25_wp)
+            call local_scan(map, k + dir, t_end, 0.25_wp, tr%control)
          do m = 0, 4
             if (m == 3) cycle
             kk = k - dir*m
@@ -570,7 +573,7 @@ contains
             do i = 1, piece%n
                if (piece%alpha(i) /= map%alpha(kk)) cycle
                w = max(0.02_wp, 3.0_wp*abs(log(piece%mu(i)) - t_end))
-               call local_scan(map, kk, log(piece%mu(i)), w)
+               call local_scan(map, kk, log(piece%mu(i)), w, tr%control)
             end do
          end do
       end subroutine scan_near_end
