@@ -6,7 +6,7 @@
 !> Method (doc/theory.md, "Adhesion map"): a coarse log scan in mu at every `scan_every`-th
 !> alpha (and the first and last) finds the changes; each change is then continued over
 !> the whole alpha grid in both directions: the next point is predicted by extrapolating
-!> the last three in (ln alpha, ln mu), bracketed by two load paths, and refined by a
+!> the last three or four in (ln alpha, ln mu), bracketed by two load paths, and refined by a
 !> safeguarded secant on a smooth indicator whose zero is the change (the difference of
 !> the two loads whose order decides the mechanism, e.g. the largest fold load minus the
 !> load at a* -> 1/2), with a bisection step whenever the secant does not halve the
