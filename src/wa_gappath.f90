@@ -19,7 +19,7 @@ module wa_gappath
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight, &
       curve_case2_load, curve_y_max
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &
-      event_a_turn, event_jump_start, event_jump_end, event_full_contact_reached
+      event_none, event_a_turn, event_jump_start, event_jump_end, event_full_contact_reached
    use wa_loadpath, only: path_type
    implicit none
    private
@@ -399,12 +399,17 @@ contains
          y1 = merge(ch%y(i + 1), curve_y_max, j_in == i + 1)
          st(0) = chain_state(ch, i)
          st(n_samples + 1) = chain_state(ch, i + 1)
+         n_turn = 0
          do k = 1, n_samples
             ys(k) = y0 + (y1 - y0)*real(k, wp)/real(n_samples + 1, wp)
-            call solve_at_y(model, params, ch, i, ys(k), st(k), status, errmsg)
-            if (status /= wa_ok) return
+            call solve_at_y(model, params, ch, i, ys(k), st(k), status)
+            if (status /= wa_ok) exit
          end do
-         n_turn = 0
+         if (status /= wa_ok) then        ! the samples are a bonus: the interval stays
+            status = wa_ok                ! as traced
+            i = i + 1
+            cycle
+         end if
          do k = 1, n_samples
             if ((st(k)%gbar - st(k - 1)%gbar)*(st(k + 1)%gbar - st(k)%gbar) < 0.0_wp) then
                n_turn = n_turn + 1
@@ -427,7 +432,7 @@ contains
          ch%g = [ch%g(:at), sx%gbar, ch%g(at + 1:)]
          ch%y = [ch%y(:at), yx, ch%y(at + 1:)]
          ch%zone = [ch%zone(:at), zone_inside, ch%zone(at + 1:)]
-         ch%event = [ch%event(:at), 0, ch%event(at + 1:)]
+         ch%event = [ch%event(:at), event_none, ch%event(at + 1:)]
          ch%extremum = [ch%extremum(:at), .false., ch%extremum(at + 1:)]
          ch%stable_after = [ch%stable_after(:at), .false., ch%stable_after(at + 1:)]
          ch%n = ch%n + 1
