@@ -78,7 +78,7 @@ contains
    !> The approach and retraction mechanisms of the gap-controlled cycle on a traced branch
    !> (-1 both when the cycle fails).
    subroutine gap_mechanisms_from_branch(model, params, branch, mech_approach, &
-         mech_retraction, status, errmsg, ln_a_out)
+         mech_retraction, status, errmsg, ln_a_out, g_in)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
@@ -89,6 +89,11 @@ contains
       !> contact by a jump (NaN where it does not): the map's smooth indicator of the
       !> jump-out boundaries
       real(wp), intent(out), optional :: ln_a_out
+      !> gbar* at the first traced state with contact (a* = a_start) minus gbar* of the
+      !> approach's first jump from a state without contact (NaN where there is none): it
+      !> changes sign where that jump's landing passes the onset of contact, the map's
+      !> smooth indicator of the jump-in boundaries (contact made gradually <-> by a jump)
+      real(wp), intent(out), optional :: g_in
       type(gap_path_type) :: path
       real(wp) :: p_min, g_min, a_min, g_contact
       integer :: k
@@ -97,6 +102,7 @@ contains
       mech_approach = -1
       mech_retraction = -1
       if (present(ln_a_out)) ln_a_out = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (present(g_in)) g_in = ieee_value(1.0_wp, ieee_quiet_nan)
       call gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
          status, errmsg)
       if (status /= wa_ok) return
@@ -108,6 +114,9 @@ contains
          from_contact = in_contact(k)
          to_contact = in_contact(k + 1)
          if (path%stage(k) == gap_stage_approach) then
+            if (present(g_in) .and. .not. from_contact) then
+               if (g_in /= g_in) g_in = onset_gbar() - path%gbar(k)
+            end if
             if (.not. from_contact .and. to_contact) &
                mech_approach = ior(mech_approach, gap_flag_jump_contact)
             if (from_contact .and. to_contact) &
@@ -125,6 +134,17 @@ contains
          end if
       end do
    contains
+      pure real(wp) function onset_gbar()
+         integer :: i
+         onset_gbar = ieee_value(1.0_wp, ieee_quiet_nan)
+         do i = 1, branch%n
+            if (branch%a_star(i) > 0.0_wp .and. branch%zone_case(i) /= zone_no_contact) then
+               onset_gbar = branch%gbar(i)
+               return
+            end if
+         end do
+      end function onset_gbar
+
       pure logical function in_contact(k)
          integer, intent(in) :: k
          in_contact = path%a_star(k) > 0.0_wp .and. path%zone_case(k) /= zone_no_contact
