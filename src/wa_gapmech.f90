@@ -24,7 +24,7 @@ module wa_gapmech
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, set_error
    use wa_params, only: params_type, new_params
-   use wa_state, only: zone_no_contact
+   use wa_state, only: zone_no_contact, zone_inside
    use wa_branch, only: branch_type, trace_branch
    use wa_loadpath, only: a_point_pull_off, bisect_mechanism
    use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
@@ -78,7 +78,7 @@ contains
    !> The approach and retraction mechanisms of the gap-controlled cycle on a traced branch
    !> (-1 both when the cycle fails).
    subroutine gap_mechanisms_from_branch(model, params, branch, mech_approach, &
-         mech_retraction, status, errmsg, ln_a_out, g_in)
+         mech_retraction, status, errmsg, ln_a_out, g_in, g_half)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
       type(branch_type), intent(in) :: branch
@@ -94,6 +94,12 @@ contains
       !> changes sign where that jump's landing passes the onset of contact, the map's
       !> smooth indicator of the jump-in boundaries (contact made gradually <-> by a jump)
       real(wp), intent(out), optional :: g_in
+      !> 1 - gbar* of the first approach (1) and retraction (2) jump between a case-1 state
+      !> and a state at c* = 1/2 (NaN where there is none): on the c* = 1/2 sheet contact
+      !> sets in at gbar* = 1 (a* -> 0, the zone over the whole period), so it changes sign
+      !> where that jump's end on the sheet passes the onset of contact, the map's smooth
+      !> indicator of those inner-jump boundaries
+      real(wp), intent(out), optional :: g_half(2)
       type(gap_path_type) :: path
       real(wp) :: p_min, g_min, a_min, g_contact
       integer :: k
@@ -103,6 +109,7 @@ contains
       mech_retraction = -1
       if (present(ln_a_out)) ln_a_out = ieee_value(1.0_wp, ieee_quiet_nan)
       if (present(g_in)) g_in = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (present(g_half)) g_half = ieee_value(1.0_wp, ieee_quiet_nan)
       call gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
          status, errmsg)
       if (status /= wa_ok) return
@@ -113,6 +120,12 @@ contains
             path%event(k + 1) /= gap_event_jump_end) cycle
          from_contact = in_contact(k)
          to_contact = in_contact(k + 1)
+         if (present(g_half) .and. (path%stage(k) == gap_stage_approach .or. &
+            path%stage(k) == gap_stage_retraction)) then
+            associate (g => g_half(merge(1, 2, path%stage(k) == gap_stage_approach)))
+               if (g /= g .and. one_half_one_case1(k)) g = 1.0_wp - path%gbar(k)
+            end associate
+         end if
          if (path%stage(k) == gap_stage_approach) then
             if (present(g_in) .and. .not. from_contact) then
                if (g_in /= g_in) g_in = onset_gbar() - path%gbar(k)
@@ -144,6 +157,14 @@ contains
             end if
          end do
       end function onset_gbar
+
+      !> Jump k -> k+1 has one end at c* = 1/2 and the other on case 1
+      pure logical function one_half_one_case1(k)
+         integer, intent(in) :: k
+         one_half_one_case1 = (path%c_star(k) == 0.5_wp .and. &
+            path%zone_case(k + 1) == zone_inside) .or. &
+            (path%c_star(k + 1) == 0.5_wp .and. path%zone_case(k) == zone_inside)
+      end function one_half_one_case1
 
       pure logical function in_contact(k)
          integer, intent(in) :: k

@@ -124,12 +124,16 @@ module wa_map
       !> gbar* where contact sets in minus gbar* of the approach's first jump from a state
       !> without contact (gradual contact <-> jump-in where the landing passes the onset)
       real(wp) :: g_in = 0.0_wp
+      !> 1 - gbar* of the first approach / retraction jump between case 1 and c* = 1/2
+      !> (inner jumps <-> none where its end on the c* = 1/2 sheet passes the onset of
+      !> contact, gbar* = 1)
+      real(wp) :: g_half(2) = 0.0_wp
    end type probe_type
 
    !> The indicators a boundary can be followed by (the first whose signs differ across
    !> a located bracket is used for the next point's secant)
    integer, parameter :: ind_none = 0, ind_loads = 1, ind_f_start = 2, ind_a_pf = 3, &
-      ind_a_out = 4, ind_g_in = 5
+      ind_a_out = 4, ind_g_in = 5, ind_g_half = 6
 
    !> What continuing a curve needs (fixed for one map).
    type :: tracker_type
@@ -1048,6 +1052,9 @@ contains
       case (ind_g_in)
          indicator_of = p%g_in
          if (tr%which /= 3) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
+      case (ind_g_half)
+         indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
+         if (tr%which == 3 .or. tr%which == 4) indicator_of = p%g_half(tr%which - 2)
       case default
          indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       end select
@@ -1060,7 +1067,7 @@ contains
       type(probe_type), intent(in) :: p_lo, p_hi
       real(wp) :: g_lo, g_hi
       integer :: ind
-      do ind = ind_loads, ind_g_in
+      do ind = ind_loads, ind_g_half
          g_lo = indicator_of(tr, ind, p_lo)
          g_hi = indicator_of(tr, ind, p_hi)
          if (ieee_is_finite(g_lo) .and. ieee_is_finite(g_hi) .and. &
@@ -1157,6 +1164,7 @@ contains
       p%ln_a_pf = nan
       p%ln_a_out = nan
       p%g_in = nan
+      p%g_half = nan
       call new_params(alpha, exp(t), params, p%status, msg)
       if (p%status /= wa_ok) return
       opts%mean_gap = iand(control, map_control_gap) /= 0    ! load control needs P* only
@@ -1164,7 +1172,7 @@ contains
       if (p%status /= wa_ok) return
       if (iand(control, map_control_gap) /= 0) then
          call gap_mechanisms_from_branch(model, params, br, p%mech(3), p%mech(4), p%status, &
-            msg, ln_a_out=p%ln_a_out, g_in=p%g_in)
+            msg, ln_a_out=p%ln_a_out, g_in=p%g_in, g_half=p%g_half)
          if (p%status /= wa_ok) then
             p%mech = -1
             return
