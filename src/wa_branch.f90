@@ -606,11 +606,12 @@ contains
       fa = central5(fv, ha)
       pa = central5(pv, ha)
       ! in y the functions vary on the scale of the distance to y_max (c* = 1/2): a
-      ! central stencil well inside it, a one-sided one below y_max on the boundary
+      ! central stencil well inside it (its centre is the a* stencil's), a one-sided one
+      ! below y_max on the boundary
       hy = min(2.0e-3_wp*max(1.0_wp, abs(y)), 0.02_wp*(curve_y_max - y))
       if (hy > 0.0_wp) then
          do k = 0, 4
-            call values_at(a, y + (k - 2)*hy, fv(k), pv(k))
+            if (k /= 2) call values_at(a, y + (k - 2)*hy, fv(k), pv(k))
          end do
          fy = central5(fv, hy)
          py = central5(pv, hy)
