@@ -16,7 +16,7 @@ module wa_branch
    use wa_params, only: params_type, check_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       model_westergaard, model_jkr, model_dw, model_md
-   use wa_curve, only: curve_residual, curve_state, curve_y_max, curve_weight, &
+   use wa_curve, only: curve_residual, curve_state, curve_values, curve_y_max, curve_weight, &
       curve_case2_load, curve_variable, curve_equilibrium, curve_load
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
@@ -627,8 +627,7 @@ contains
       pure subroutine values_at(aa, yy, fval, pval)
          real(wp), intent(in) :: aa, yy
          real(wp), intent(out) :: fval, pval
-         fval = curve_residual(model, params, aa, yy)
-         pval = curve_load(model, params, aa, yy)
+         call curve_values(model, params, aa, yy, fval, pval)
       end subroutine values_at
    end subroutine accurate_partials
 

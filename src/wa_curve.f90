@@ -14,12 +14,13 @@ module wa_curve
    use wa_state, only: state_type, zone_inside, model_westergaard, model_jkr, model_dw, &
       model_md
    use wa_dw, only: dw_residual, dw_state_at, dw_load_at
-   use wa_md, only: md_curve_residual, md_curve_state
+   use wa_md, only: md_curve_residual, md_curve_state, md_curve_values
    use wa_models, only: model_roots, max_model_roots
    implicit none
    private
 
-   public :: curve_residual, curve_state, curve_load, curve_y_max, curve_weight, curve_case2_load
+   public :: curve_residual, curve_state, curve_load, curve_values, curve_y_max, curve_weight, &
+      curve_case2_load
 
    !> y where c* = 1/2, in both models' variables.
    real(wp), parameter :: curve_y_max = 0.0_wp
@@ -62,6 +63,21 @@ contains
          state%p_star = ieee_value(state%p_star, ieee_quiet_nan)
       end select
    end function curve_state
+
+   !> curve_residual and curve_load at (a*, y) together (MD shares its geometry and zone
+   !> variable between them): the values of the two functions, bit for bit.
+   pure subroutine curve_values(model, params, a_star, y, f, p)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, y
+      real(wp), intent(out) :: f, p
+      if (model == model_md) then
+         call md_curve_values(params, a_star, y, f, p)
+      else
+         f = curve_residual(model, params, a_star, y)
+         p = curve_load(model, params, a_star, y)
+      end if
+   end subroutine curve_values
 
    !> P* of curve_state alone (DW: without its mean gap).
    pure real(wp) function curve_load(model, params, a_star, y)

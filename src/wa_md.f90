@@ -47,7 +47,7 @@ module wa_md
    private
 
    public :: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, md_midgap_opening
-   public :: md_curve_residual, md_curve_state
+   public :: md_curve_residual, md_curve_state, md_curve_values
 
    !> sin and cos of pi a*; for the root scan of `solve` (add_scan_limits) also the
    !> opening at c* = 1/2 and the scan range in x = ln tan s.
@@ -357,6 +357,24 @@ contains
       delta = opening(params, geo, x_of_v(geo, v))
       f = log(max(delta, tiny(delta))/params%dcod)
    end function md_curve_residual
+
+   !> md_curve_residual and the P* of md_curve_state at (a*, v) from one geometry and x
+   !> (the continuation's difference stencils need both at every node; values identical).
+   pure subroutine md_curve_values(params, a_star, v, f, p)
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_star, v
+      real(wp), intent(out) :: f, p
+      type(md_geometry) :: geo
+      real(wp) :: x
+      geo = geometry(a_star)
+      x = x_of_v(geo, v)
+      p = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)   ! (2.27a), as case1_state
+      if (params%sigma0 == 0.0_wp) then
+         f = -1.0_wp
+      else
+         f = log(max(opening(params, geo, x), tiny(1.0_wp))/params%dcod)
+      end if
+   end subroutine md_curve_values
 
    !> The case-1 state at (a*, v) (no solve).
    pure function md_curve_state(params, a_star, v) result(state)
