@@ -1042,7 +1042,6 @@ contains
          indicator_of = load_indicator(tr, p)
       case (ind_f_start)
          indicator_of = p%f_start
-         if (tr%which > 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
       case (ind_a_pf)
          indicator_of = p%ln_a_pf
          if (tr%which /= 2) indicator_of = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -1170,6 +1169,9 @@ contains
       opts%mean_gap = iand(control, map_control_gap) /= 0    ! load control needs P* only
       call trace_branch(model, params, br, p%status, msg, opts)
       if (p%status /= wa_ok) return
+      ! a case-1 root born at the branch's first point changes the mechanisms of both
+      ! controls (MD 302 and 402 at alpha ~0.03-0.2 under gap control)
+      p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
       if (iand(control, map_control_gap) /= 0) then
          call gap_mechanisms_from_branch(model, params, br, p%mech(3), p%mech(4), p%status, &
             msg, ln_a_out=p%ln_a_out, g_in=p%g_in, g_half=p%g_half)
@@ -1185,7 +1187,6 @@ contains
          return
       end if
       p%mech(1:2) = [path%fc_mechanism, path%pf_mechanism]
-      p%f_start = curve_residual(model, params, opts%a_start, curve_y_max)
       do i = path%n, 1, -1
          if (path%event(i) /= event_pull_off) cycle
          if (path%a_star(i) >= opts%a_start) p%ln_a_pf = log(path%a_star(i)/a_point_pull_off)
