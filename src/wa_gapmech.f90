@@ -20,7 +20,7 @@
 !> count: MD has them for every mu > 0 (gbar* rises as c* ln(1/c*) from the first
 !> interaction) and at small mu they are below the traced branch's resolution.
 module wa_gapmech
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, set_error
    use wa_params, only: params_type, new_params
@@ -123,12 +123,12 @@ contains
          if (present(g_half) .and. (path%stage(k) == gap_stage_approach .or. &
             path%stage(k) == gap_stage_retraction)) then
             associate (g => g_half(merge(1, 2, path%stage(k) == gap_stage_approach)))
-               if (g /= g .and. one_half_one_case1(k)) g = 1.0_wp - path%gbar(k)
+               if (ieee_is_nan(g) .and. one_half_one_case1(k)) g = 1.0_wp - path%gbar(k)
             end associate
          end if
          if (path%stage(k) == gap_stage_approach) then
             if (present(g_in) .and. .not. from_contact) then
-               if (g_in /= g_in) g_in = onset_gbar() - path%gbar(k)
+               if (ieee_is_nan(g_in)) g_in = onset_gbar() - path%gbar(k)
             end if
             if (.not. from_contact .and. to_contact) &
                mech_approach = ior(mech_approach, gap_flag_jump_contact)
