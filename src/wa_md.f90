@@ -347,15 +347,13 @@ contains
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star, v
       real(wp) :: f
-      real(wp) :: delta
       type(md_geometry) :: geo
       if (params%sigma0 == 0.0_wp) then             ! mu = 0: Westergaard, case 2 throughout
          f = -1.0_wp
          return
       end if
       geo = geometry(a_star)
-      delta = opening(params, geo, x_of_v(geo, v))
-      f = log(max(delta, tiny(delta))/params%dcod)
+      f = curve_residual_at(params, geo, x_of_v(geo, v))
    end function md_curve_residual
 
    !> md_curve_residual and the P* of md_curve_state at (a*, v) from one geometry and x
@@ -368,13 +366,21 @@ contains
       real(wp) :: x
       geo = geometry(a_star)
       x = x_of_v(geo, v)
-      p = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)   ! (2.27a), as case1_state
+      p = case1_load(params, geo, x)
       if (params%sigma0 == 0.0_wp) then
          f = -1.0_wp
       else
-         f = log(max(opening(params, geo, x), tiny(1.0_wp))/params%dcod)
+         f = curve_residual_at(params, geo, x)
       end if
    end subroutine md_curve_values
+
+   !> ln(opening/Dcod) at x for Sigma0 > 0 (md_curve_residual's F)
+   pure real(wp) function curve_residual_at(params, geo, x)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      curve_residual_at = log(max(opening(params, geo, x), tiny(1.0_wp))/params%dcod)
+   end function curve_residual_at
 
    !> The case-1 state at (a*, v) (no solve).
    pure function md_curve_state(params, a_star, v) result(state)
@@ -955,9 +961,17 @@ contains
       ! case 1 has c* < 1/2 even where c* rounds to 1/2 (1/2 - c* below 2^-54; c* - a*
       ! keeps its full accuracy in gap_width)
       state%c_star = min(nearest(0.5_wp, -1.0_wp), geo%a_star + state%gap_width)
-      state%p_star = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)   ! (2.27a)
+      state%p_star = case1_load(params, geo, x)
       state%zone_case = zone_inside
    end function case1_state
+
+   !> P* of the case-1 state at x: A^2 - Sigma0 Phi   (2.27a)
+   pure real(wp) function case1_load(params, geo, x)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      case1_load = geo%a**2 - params%sigma0*dugdale_fraction(geo, x)
+   end function case1_load
 
    !> c* = 1/2, P* = A^2 - Sigma0 (extension); at a* = 1/2 full contact at P* = 1 - Sigma0.
    pure function case2_state(params, geo) result(state)
