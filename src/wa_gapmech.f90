@@ -26,7 +26,9 @@ module wa_gapmech
    use wa_params, only: params_type, new_params
    use wa_state, only: zone_no_contact, zone_inside
    use wa_branch, only: branch_type, trace_branch
-   use wa_loadpath, only: a_point_pull_off, bisect_mechanism
+   use wa_loadpath, only: a_point_pull_off
+   use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
+      bisection_tell, bisection_result
    use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
       gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
    implicit none
@@ -187,6 +189,11 @@ contains
       real(wp), parameter :: tries(15) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp, 0.375_wp, 0.625_wp, 0.3125_wp, 0.6875_wp, 0.1875_wp, &
          0.8125_wp, 0.4375_wp, 0.5625_wp]
+      type(mechanism_bisection) :: bis
+      character(len=256) :: msg
+      real(wp) :: mu
+      integer :: mechanism, stat
+      logical :: more
 
       mu_change = ieee_value(1.0_wp, ieee_quiet_nan)
       if (present(bracket)) bracket = mu_change
@@ -201,23 +208,32 @@ contains
             "required", status, errmsg)
          return
       end if
-      call bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, "gap cycle", mu_change, &
-         status, errmsg, bracket)
-   contains
-      integer function mechanism_at(mu, stat, msg)
-         real(wp), intent(in) :: mu
-         integer, intent(out) :: stat
-         character(len=*), intent(inout) :: msg
-         type(params_type) :: params
-         integer :: ma, mr
-         mechanism_at = -1
-         msg = ""
-         call new_params(alpha, mu, params, stat, msg)
-         if (stat /= wa_ok) return
-         call gap_mechanisms(model, params, ma, mr, stat, msg)
-         if (stat /= wa_ok) return
-         mechanism_at = merge(ma, mr, which == 3)
-      end function mechanism_at
+      call bisection_start(bis, mu_lo, mu_hi, tries, "gap cycle")
+      do
+         call bisection_next(bis, mu, more)
+         if (.not. more) exit
+         mechanism = gap_mechanism(model, alpha, mu, which, stat, msg)
+         call bisection_tell(bis, mechanism, stat, msg)
+      end do
+      call bisection_result(bis, mu_change, status, errmsg, bracket)
    end subroutine gap_mechanism_change
+
+   !> The approach (which = 3) or retraction (which = 4) mechanism of the gap cycle at
+   !> (alpha, mu); -1 and stat /= wa_ok, with msg, where the cycle fails.
+   integer function gap_mechanism(model, alpha, mu, which, stat, msg) result(mechanism)
+      integer, intent(in) :: model, which
+      real(wp), intent(in) :: alpha, mu
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: msg
+      type(params_type) :: params
+      integer :: ma, mr
+      mechanism = -1
+      msg = ""
+      call new_params(alpha, mu, params, stat, msg)
+      if (stat /= wa_ok) return
+      call gap_mechanisms(model, params, ma, mr, stat, msg)
+      if (stat /= wa_ok) return
+      mechanism = merge(ma, mr, which == 3)
+   end function gap_mechanism
 
 end module wa_gapmech

@@ -15,12 +15,14 @@ module wa_loadpath
       event_full_contact_reached, event_full_contact_left, event_pull_off
    use wa_curve, only: curve_equilibrium
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_text, only: real_text, int_text
+   use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
+      bisection_tell, bisection_result
    implicit none
    private
 
    public :: path_type, load_path, critical_forces, path_from_branch
    public :: stage_loading, stage_unloading, critical_sweep, mechanism_change
-   public :: bisect_mechanism, mechanism_of_mu
    public :: mechanism_gradual, mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
 
    integer, parameter :: stage_loading = 1, stage_unloading = 2
@@ -66,16 +68,6 @@ module wa_loadpath
    end type polyline
 
 
-   abstract interface
-      !> The mechanism (an integer code) at mu, for bisect_mechanism; stat /= wa_ok with a
-      !> message where it cannot be computed.
-      integer function mechanism_of_mu(mu, stat, msg)
-         import :: wp
-         real(wp), intent(in) :: mu
-         integer, intent(out) :: stat
-         character(len=*), intent(inout) :: msg
-      end function mechanism_of_mu
-   end interface
 
 contains
 
@@ -342,121 +334,40 @@ contains
       real(wp), intent(out), optional :: bracket(2)
       real(wp), parameter :: tries(7) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp]
+      type(mechanism_bisection) :: bis
+      character(len=256) :: msg
+      real(wp) :: mu
+      integer :: mechanism, stat
+      logical :: more
 
-      call bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, "load path", mu_change, &
-         status, errmsg, bracket)
-   contains
-      integer function mechanism_at(mu, stat, msg)
-         real(wp), intent(in) :: mu
-         integer, intent(out) :: stat
-         character(len=*), intent(inout) :: msg
-         type(params_type) :: params
-         type(path_type) :: path
-         mechanism_at = -1
-         msg = ""
-         call new_params(alpha, mu, params, stat, msg)
-         if (stat /= wa_ok) return
-         call load_path(model, params, path, stat, msg)
-         if (stat /= wa_ok) return
-         mechanism_at = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
-      end function mechanism_at
+      call bisection_start(bis, mu_lo, mu_hi, tries, "load path")
+      do
+         call bisection_next(bis, mu, more)
+         if (.not. more) exit
+         mechanism = load_mechanism(model, alpha, mu, which, stat, msg)
+         call bisection_tell(bis, mechanism, stat, msg)
+      end do
+      call bisection_result(bis, mu_change, status, errmsg, bracket)
    end subroutine mechanism_change
 
-   !> The bisection of mechanism_change for any mechanism_at(mu) (gap control's too):
-   !> [mu_lo, mu_hi] narrowed to 1e-10 relative (geometric; arithmetic while the lower end
-   !> is 0), a failing trial mu replaced by the next fraction of the bracket in `tries`;
-   !> `what` names the computation in the messages. mu_change: the bracket's midpoint.
-   subroutine bisect_mechanism(mechanism_at, mu_lo, mu_hi, tries, what, mu_change, status, &
-         errmsg, bracket)
-      procedure(mechanism_of_mu) :: mechanism_at
-      real(wp), intent(in) :: mu_lo, mu_hi, tries(:)
-      character(len=*), intent(in) :: what
-      real(wp), intent(out) :: mu_change
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      real(wp), intent(out), optional :: bracket(2)
-      integer, parameter :: max_steps = 200
-      character(len=256) :: msg
-      real(wp) :: lo, hi, x
-      integer :: m_lo, m_hi, m_x, step, k, stat
-      logical :: done
-
-      lo = mu_lo; hi = mu_hi
-      status = wa_ok
+   !> The full-contact (which = 1) or pull-off (which = 2) mechanism of the load path at
+   !> (alpha, mu); -1 and stat /= wa_ok, with msg, where the path fails.
+   integer function load_mechanism(model, alpha, mu, which, stat, msg) result(mechanism)
+      integer, intent(in) :: model, which
+      real(wp), intent(in) :: alpha, mu
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: msg
+      type(params_type) :: params
+      type(path_type) :: path
+      mechanism = -1
       msg = ""
-      m_lo = mechanism_at(lo, stat, msg)
-      if (stat == wa_ok) then
-         m_hi = mechanism_at(hi, stat, msg)
-         if (stat /= wa_ok) then
-            call set_error(stat, "mechanism change: mu_hi = "//real_text(hi)//": "// &
-               trim(msg), status, errmsg)
-         else if (m_hi == m_lo) then     ! no change (or an even number) in the bracket
-            call set_error(wa_no_solution, "mechanism change: the "//what//" has the "// &
-               "same mechanism at mu_lo and mu_hi, so no change is bracketed", status, errmsg)
-         end if
-      else
-         call set_error(stat, "mechanism change: mu_lo = "//real_text(lo)//": "//trim(msg), &
-            status, errmsg)
-      end if
-      if (status == wa_ok) then
-         done = .false.
-         bisect: do step = 1, max_steps
-            done = .not. (hi - lo > 1.0e-10_wp*hi)
-            if (done) exit bisect
-            do k = 1, size(tries)
-               x = inside(lo, hi, tries(k))
-               done = .not. (x > lo .and. x < hi)          ! no representable point left
-               if (done) exit bisect
-               m_x = mechanism_at(x, stat, msg)
-               if (stat == wa_ok) exit
-            end do
-            if (stat /= wa_ok) then
-               call set_error(stat, "mechanism change not located further than ["// &
-                  real_text(lo)//", "//real_text(hi)//"]: the "//what//" fails at every "// &
-                  "trial mu inside ("//trim(msg)//")", status, errmsg)
-               done = .true.
-               exit bisect
-            end if
-            if (m_x == m_lo) then
-               lo = x
-            else
-               hi = x
-            end if
-         end do bisect
-         if (.not. done) done = .not. (hi - lo > 1.0e-10_wp*hi)
-         if (.not. done) call set_error(wa_not_converged, &
-            "mechanism change: no convergence in 200 bisection steps", status, errmsg)
-      end if
-      mu_change = inside(lo, hi, 0.5_wp)
-      if (present(bracket)) bracket = [lo, hi]
-   contains
-      !> The point at fraction f of [a, b]: geometric when a > 0, else arithmetic.
-      pure real(wp) function inside(a, b, f)
-         real(wp), intent(in) :: a, b, f
-         if (a > 0.0_wp) then
-            inside = a*(b/a)**f
-         else
-            inside = a + f*(b - a)
-         end if
-      end function inside
-   end subroutine bisect_mechanism
+      call new_params(alpha, mu, params, stat, msg)
+      if (stat /= wa_ok) return
+      call load_path(model, params, path, stat, msg)
+      if (stat /= wa_ok) return
+      mechanism = merge(path%fc_mechanism, path%pf_mechanism, which == 1)
+   end function load_mechanism
 
-   !> A real in ES format with a 3-digit exponent, e.g. 7.9369860901363931E-001.
-   pure function real_text(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      write (buf, '(es24.16e3)') x
-      text = trim(adjustl(buf))
-   end function real_text
-
-   pure function int_text(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function int_text
 
    !> From the stable segment [seg, seg+1], walk along the branch toward rising load
    !> (dir = +1, loading) or falling load (dir = -1) while the segments stay stable; the

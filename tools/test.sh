@@ -12,6 +12,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x .venv/bin/python ] || { echo "tools/test.sh: run 'bash tools/setup.sh' first" >&2; exit 1; }
 export PATH="$PWD/.venv/bin:$PATH"
+# No executable stack: every fpm build of the tests (and the pytest runs below) refuses
+# code that needs a trampoline (an internal procedure passed as an argument).
+export FPM_FFLAGS="${FPM_FFLAGS:+$FPM_FFLAGS }-Werror=trampolines"
 
 fpm test --profile release
 python -m pip install --quiet --disable-pip-version-check ./python

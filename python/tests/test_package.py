@@ -107,3 +107,15 @@ def test_status_texts_match_c_interface():
     for code, text in enumerate(want):
         assert _core._text(_core._f.fa_status_text(code)) == text
     assert _core._text(_core._f.fa_status_text(99)) == "unknown status"
+
+
+def test_extension_has_no_executable_stack(repo):
+    """glibc 2.41 and later refuse to dlopen a library whose GNU_STACK is RWE."""
+    import shutil
+    import subprocess
+    from wavyadhesion import _wa_f2py
+    if shutil.which("readelf") is None:
+        pytest.skip("readelf (binutils) not installed")
+    run = subprocess.run(["bash", str(repo / "tools" / "check_stack.sh"), _wa_f2py.__file__],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr

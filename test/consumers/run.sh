@@ -4,7 +4,8 @@
 # doc/using-the-library.md against it: make/ (Makefile + pkg-config, Fortran),
 # cmake/ (find_package(wavyadhesion CONFIG), Fortran), c/ (C + pkg-config) and fpm/
 # (fpm path dependency; builds from the sources). Each checks a DW equilibrium against the
-# mpmath reference and exits non-zero on a mismatch.
+# mpmath reference and exits non-zero on a mismatch; every program built and the installed
+# command line must have a non-executable stack (tools/check_stack.sh).
 # Usage: bash test/consumers/run.sh [PREFIX]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -37,5 +38,10 @@ make -s -C "$work/c"
 echo "== fpm"
 (cd "$here/fpm" && fpm run --profile release > "$work/fpm.log" 2>&1) || { cat "$work/fpm.log"; exit 1; }
 grep '^wavyadhesion ' "$work/fpm.log"
+fpm_consumer=$(cd "$here/fpm" && fpm run --profile release --runner echo 2>/dev/null | tail -n 1)
+
+echo "== non-executable stack (readelf)"
+bash "$repo/tools/check_stack.sh" "$prefix/bin/wavyadhesion" "$work/make/consumer" \
+   "$work/cmake/consumer" "$work/c/consumer" "$here/fpm/$fpm_consumer"
 
 echo "consumers: make, cmake, c, fpm all ok"
