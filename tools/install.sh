@@ -1,20 +1,26 @@
 #!/usr/bin/env bash
 # Installs the library for host codes into PREFIX (release build):
-#   PREFIX/lib/libwavyadhesion.a                         static library
-#   PREFIX/include/wavyadhesion.h                        C header
-#   PREFIX/include/*.mod                                 the library's Fortran modules
-#                                                        (wavyadhesion.mod and the wa_*.mod
-#                                                        it uses; gfortran-specific)
-#   PREFIX/lib/pkgconfig/wavyadhesion.pc                 pkg-config (Libs with GSL and the
-#                                                        gfortran runtime, Cflags -I include)
+#   PREFIX/lib/libwavyadhesion.a                          static library
+#   PREFIX/lib/libwavyadhesion.so.X.Y.Z                   shared library, soname
+#   PREFIX/lib/libwavyadhesion.so.X.Y -> .so.X.Y.Z        libwavyadhesion.so.X.Y (the ABI of
+#   PREFIX/lib/libwavyadhesion.so -> .so.X.Y              a 0.x release may change with Y)
+#   PREFIX/include/wavyadhesion.h                         C header
+#   PREFIX/include/wavyadhesion/<compiler-id>/wavyadhesion.mod
+#                                                         the public Fortran module (gfortran's
+#                                                         .mod of the umbrella is self-contained;
+#                                                         compiler-id e.g. GNU-12.2.0, as stdlib
+#                                                         and dftd4 do, so modules of several
+#                                                         compilers can live side by side)
+#   PREFIX/lib/pkgconfig/wavyadhesion.pc                  pkg-config (GSL in Requires.private)
 #   PREFIX/lib/cmake/wavyadhesion/wavyadhesion-config.cmake (+ -config-version.cmake)
-#                                                        CMake package, imported target
-#                                                        wavyadhesion::wavyadhesion
-#   PREFIX/bin/wavyadhesion                              the command line
+#                                                         CMake package, imported targets
+#                                                         wavyadhesion::wavyadhesion (shared)
+#                                                         and wavyadhesion::wavyadhesion_static
+#   PREFIX/bin/wavyadhesion                               the command line
 # fpm (`fpm install`, with `[install] library = true` in fpm.toml) builds and collects the
-# archive, the modules and the executable into a staging directory; this script keeps the
-# library's own modules (not the command line's or the study's) and writes what fpm cannot
-# (header, pkg-config file, CMake package).
+# archive and the executable into a staging directory (its objects are position
+# independent, so the shared library is linked from the archive); this script writes what
+# fpm cannot (shared library, header, module directory, pkg-config file, CMake package).
 # Usage: bash tools/install.sh PREFIX        (see doc/using-the-library.md)
 set -euo pipefail
 if [ $# -ne 1 ] || [ "${1:0:1}" = "-" ]; then
@@ -36,67 +42,93 @@ log=$(mktemp)
 trap 'rm -rf "$stage" "$log"' EXIT
 "$fpm" install --profile release --prefix "$stage" > "$log" 2>&1 || { cat "$log" >&2; exit 1; }
 
-# The library's modules: those defined in src/ (fpm's include/ also holds the CLI's and
-# the study's, which are not part of the library).
-mapfile -t modules < <(sed -nE 's/^[[:space:]]*module[[:space:]]+([A-Za-z0-9_]+)[[:space:]]*(!.*)?$/\1/Ip' src/*.f90 \
-   | tr 'A-Z' 'a-z' | grep -v '^procedure$' | sort -u)
-[ ${#modules[@]} -gt 0 ] || { echo "tools/install.sh: no modules found in src/" >&2; exit 1; }
+fc=${FC:-gfortran}
+compiler_id="GNU-$("$fc" -dumpfullversion)"
+moddir="include/wavyadhesion/$compiler_id"
+major_minor=$(echo "$version" | cut -d. -f1,2)
+soname="libwavyadhesion.so.$major_minor"
 
-install -d "$prefix/lib/pkgconfig" "$prefix/lib/cmake/wavyadhesion" "$prefix/include" "$prefix/bin"
+install -d "$prefix/lib/pkgconfig" "$prefix/lib/cmake/wavyadhesion" "$prefix/$moddir" \
+   "$prefix/bin"
 install -m 644 "$stage/lib/libwavyadhesion.a" "$prefix/lib/"
-for m in "${modules[@]}"; do
-   install -m 644 "$stage/include/$m.mod" "$prefix/include/"
-done
+install -m 644 "$stage/include/wavyadhesion.mod" "$prefix/$moddir/"
 install -m 644 include/wavyadhesion.h "$prefix/include/"
 install -m 755 "$stage/bin/wavyadhesion" "$prefix/bin/"
 
-# The gfortran runtime, for C and C++ hosts (a Fortran compiler links it by itself).
-fc=${FC:-gfortran}
-fortran_libdir=$(dirname "$("$fc" -print-file-name=libgfortran.so)")
+# The shared library, from the archive's objects; --no-undefined: every symbol resolved
+# by GSL and the compiler's runtime, which it records as DT_NEEDED.
+"$fc" -shared -o "$prefix/lib/libwavyadhesion.so.$version" -Wl,-soname,"$soname" \
+   -Wl,--no-undefined -Wl,--whole-archive "$stage/lib/libwavyadhesion.a" \
+   -Wl,--no-whole-archive $(pkg-config --libs gsl) -lm
+ln -sf "libwavyadhesion.so.$version" "$prefix/lib/$soname"
+ln -sf "$soname" "$prefix/lib/libwavyadhesion.so"
+
+# A C host linking the static archive needs the gfortran runtime: named by its soname
+# (-l:libgfortran.so.5), which the linker finds in the system's library path, so no
+# compiler-internal directory is written into the .pc.
+gfortran_soname=$(readelf -d "$("$fc" -print-file-name=libgfortran.so)" \
+   | sed -n 's/.*Library soname: \[\(.*\)\].*/\1/p')
+[ -n "$gfortran_soname" ] || { echo "tools/install.sh: no soname for libgfortran" >&2; exit 1; }
 
 cat > "$prefix/lib/pkgconfig/wavyadhesion.pc" <<EOF
-# wavyadhesion $version, installed by tools/install.sh (static library).
+# wavyadhesion $version, installed by tools/install.sh.
+#   shared: cc ex.c \$(pkg-config --cflags --libs wavyadhesion)
+#   static: cc ex.c \$(pkg-config --cflags wavyadhesion) PREFIX/lib/libwavyadhesion.a \\
+#           \$(pkg-config --static --libs-only-l wavyadhesion | sed 's/-lwavyadhesion//')
+# Fortran hosts: fmoddir holds wavyadhesion.mod for $compiler_id.
 prefix=$prefix
 libdir=\${prefix}/lib
 includedir=\${prefix}/include
+fmoddir=\${includedir}/wavyadhesion/$compiler_id
 
 Name: wavyadhesion
 Description: Adhesive contact of a wavy elastic surface (Westergaard, JKR, double-Westergaard, Maugis-Dugdale)
 Version: $version
-Requires: gsl
-Cflags: -I\${includedir}
-Libs: -L\${libdir} -lwavyadhesion -L$fortran_libdir -lgfortran -lm
+Requires.private: gsl
+Cflags: -I\${includedir} -I\${fmoddir}
+Libs: -L\${libdir} -lwavyadhesion
+Libs.private: -l:$gfortran_soname -lm
 EOF
 
 cat > "$prefix/lib/cmake/wavyadhesion/wavyadhesion-config.cmake" <<EOF
 # CMake package of wavyadhesion $version, installed by tools/install.sh.
 #   find_package(wavyadhesion CONFIG REQUIRED)
-#   target_link_libraries(app PRIVATE wavyadhesion::wavyadhesion)
-# The imported target carries the include directory (C header and Fortran modules), GSL
-# (CMake's FindGSL: GSL::gsl) and, for projects without Fortran enabled, the gfortran
-# runtime.
+#   target_link_libraries(app PRIVATE wavyadhesion::wavyadhesion)         # shared
+#   target_link_libraries(app PRIVATE wavyadhesion::wavyadhesion_static)  # static
+# Both targets carry the include directories (C header; Fortran module of $compiler_id).
+# The static one also links GSL (CMake's FindGSL: GSL::gsl) and, for projects without
+# Fortran enabled, the gfortran runtime; the shared library records them itself.
 cmake_minimum_required(VERSION 3.14)
 get_filename_component(_wavyadhesion_prefix "\${CMAKE_CURRENT_LIST_DIR}/../../.." ABSOLUTE)
-include(CMakeFindDependencyMacro)
-find_dependency(GSL)
+set(_wavyadhesion_includes "\${_wavyadhesion_prefix}/include"
+   "\${_wavyadhesion_prefix}/$moddir")
 if(NOT TARGET wavyadhesion::wavyadhesion)
-   add_library(wavyadhesion::wavyadhesion STATIC IMPORTED)
+   add_library(wavyadhesion::wavyadhesion SHARED IMPORTED)
+   set_target_properties(wavyadhesion::wavyadhesion PROPERTIES
+      IMPORTED_LOCATION "\${_wavyadhesion_prefix}/lib/libwavyadhesion.so.$version"
+      IMPORTED_SONAME "$soname"
+      INTERFACE_INCLUDE_DIRECTORIES "\${_wavyadhesion_includes}")
+endif()
+if(NOT TARGET wavyadhesion::wavyadhesion_static)
+   include(CMakeFindDependencyMacro)
+   find_dependency(GSL)
+   add_library(wavyadhesion::wavyadhesion_static STATIC IMPORTED)
    set(_wavyadhesion_libs GSL::gsl)
    get_property(_wavyadhesion_languages GLOBAL PROPERTY ENABLED_LANGUAGES)
    if(NOT "Fortran" IN_LIST _wavyadhesion_languages)
-      find_library(WAVYADHESION_GFORTRAN_LIBRARY gfortran HINTS "$fortran_libdir")
-      list(APPEND _wavyadhesion_libs "\${WAVYADHESION_GFORTRAN_LIBRARY}")
+      list(APPEND _wavyadhesion_libs "-l:$gfortran_soname")
    endif()
    list(APPEND _wavyadhesion_libs m)
-   set_target_properties(wavyadhesion::wavyadhesion PROPERTIES
+   set_target_properties(wavyadhesion::wavyadhesion_static PROPERTIES
       IMPORTED_LOCATION "\${_wavyadhesion_prefix}/lib/libwavyadhesion.a"
       IMPORTED_LINK_INTERFACE_LANGUAGES "Fortran"
-      INTERFACE_INCLUDE_DIRECTORIES "\${_wavyadhesion_prefix}/include"
+      INTERFACE_INCLUDE_DIRECTORIES "\${_wavyadhesion_includes}"
       INTERFACE_LINK_LIBRARIES "\${_wavyadhesion_libs}")
    unset(_wavyadhesion_libs)
    unset(_wavyadhesion_languages)
 endif()
 set(wavyadhesion_VERSION "$version")
+unset(_wavyadhesion_includes)
 unset(_wavyadhesion_prefix)
 EOF
 

@@ -157,7 +157,7 @@ def test_relative_links_exist(doc):
 def test_consumer_files_quoted_verbatim():
     page = (REPO / "doc" / "using-the-library.md").read_text()
     for rel in ["make/Makefile", "make/main.f90", "cmake/CMakeLists.txt", "c/Makefile",
-                "c/main.c", "fpm/fpm.toml"]:
+                "c/main.c", "fpm/fpm.toml", "fpm_installed/fpm.toml"]:
         text = (REPO / "test" / "consumers" / rel).read_text()
         assert text.strip() in page, f"doc/using-the-library.md must quote test/consumers/{rel}"
 
