@@ -55,6 +55,7 @@ EOF
 
 echo "== fpm (installed prefix)"
 cp -r "$here/fpm_installed" "$work/fpm_installed"
+cp -r "$here/fpm/app" "$work/fpm_installed/app"     # the same program as fpm/
 (cd "$work/fpm_installed" && fpm run --profile release \
    --flag "-I$(pkg-config --variable=fmoddir wavyadhesion)" \
    --link-flag "-L$prefix/lib -Wl,-rpath,$prefix/lib" > "$work/fpm_installed.log" 2>&1) \
