@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the Fortran API reference with FORD (PyPI `ford`, installed into .venv by
 # tools/setup.sh) from the `!>` comments in src/, into doc/api/ (open doc/api/index.html).
-# Project file: doc/ford.md. Fails when FORD prints any warning or error.
+# Project file: doc/ford.md. Fails when FORD prints any warning or error. The pages
+# render offline (tools/ford_offline.py: a local Bootstrap, no CDN).
 # Usage: bash tools/ford.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,4 +18,6 @@ if [ "$status" -ne 0 ] || grep -qiE "warning|error" "$log"; then
    echo "tools/ford.sh: FORD failed or warned (exit status $status)" >&2
    exit 1
 fi
+# Offline: Bootstrap from Debian's libjs-bootstrap5 instead of FORD's CDN links.
+python3 tools/ford_offline.py doc/api src
 echo "FORD API reference: doc/api/index.html ($(find doc/api -name '*.html' | wc -l) pages)"

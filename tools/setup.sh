@@ -3,6 +3,7 @@
 # when everything is present:
 #   apt-get:  gfortran, libgsl-dev, pkg-config; for the Python parts also python3-venv
 #             (when `python3 -m venv` cannot work) and python3-dev (Python.h, for f2py);
+#             for the API reference libjs-bootstrap5 (FORD's pages without a CDN);
 #   pip:      into the project's virtual environment .venv (git-ignored), never into the
 #             system Python (Debian's python3 is EXTERNALLY-MANAGED, PEP 668): fpm; for
 #             the Python parts also numpy, meson, meson-python, ninja, pytest, ford, and
@@ -34,6 +35,8 @@ if [ "$mode" = all ]; then
    # The f2py extension compiles against Python.h (Debian: python3-dev).
    inc=$("$python" -c "import sysconfig; print(sysconfig.get_paths()['include'])")
    [ -e "$inc/Python.h" ] || need_apt+=(python3-dev)
+   # The API reference renders offline with a local Bootstrap (tools/ford_offline.py).
+   [ -e /usr/share/javascript/bootstrap5/css/bootstrap.min.css ] || need_apt+=(libjs-bootstrap5)
 fi
 if [ ${#need_apt[@]} -gt 0 ]; then
    sudo_cmd=""

@@ -176,6 +176,12 @@ def test_ford_builds_without_warnings():
     assert not ems, sorted(ems)[:10]
     text = (REPO / "doc" / "api" / "module" / "wa_state.html").read_text()
     assert "a* &lt; c* &lt; 1/2" in text
+    # Renders offline: every stylesheet and script of every page is local.
+    for page in pages:
+        head = page.read_text().split("</head>", 1)[0]
+        remote = re.findall(r'(?:href|src)="(https?://[^"]+)"', head)
+        assert not remote, f"{page}: {remote}"
+    assert (REPO / "doc" / "api" / "vendor" / "bootstrap.min.css").stat().st_size > 100_000
 
 
 def test_one_version_everywhere():
