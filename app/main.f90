@@ -6,6 +6,7 @@ program wavyadhesion_cli
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wavyadhesion
+   use wa_kinds, only: wp
    use wa_cli_options, only: cli_options, parse_command_line, model_name, given, si_given
    use wa_cli_table, only: write_header, write_row, format_real
    use wa_cli_output, only: sink_type, open_sink, put_line, close_sink, discard_sink

@@ -3,7 +3,8 @@
 module wa_cli_options
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
       ieee_quiet_nan
-   use wavyadhesion, only: wp, model_westergaard, model_jkr, model_dw, model_md
+   use wa_kinds, only: wp
+   use wavyadhesion, only: model_westergaard, model_jkr, model_dw, model_md
    implicit none
    private
 

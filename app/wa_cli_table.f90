@@ -3,7 +3,8 @@
 !> `csv` has one header row of column names, then the same numbers.
 module wa_cli_table
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use wavyadhesion, only: wp, params_type, wa_version
+   use wa_kinds, only: wp
+   use wavyadhesion, only: params_type, wa_version
    use wa_cli_output, only: sink_type, put_line
    implicit none
    private

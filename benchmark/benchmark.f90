@@ -3,6 +3,7 @@
 program benchmark
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use wavyadhesion
+   use wa_kinds, only: wp
    implicit none
    character(len=64) :: arg, only
    integer :: i_arg

@@ -1,7 +1,10 @@
 !> The wavyadhesion library: adhesive contact of a wavy elastic surface against a flat.
-!> The umbrella module: `use wavyadhesion` gives the whole public API.
+!> The umbrella module: `use wavyadhesion` gives the whole public API. Every name it
+!> exports starts with a prefix of the library (wa_, model_, zone_, event_, ...) or names
+!> a documented routine or type, so a host program can `use wavyadhesion` without `only:`
+!> beside its own `wp`, `pi` or `status`; the real kind is `wa_wp`.
 module wavyadhesion
-   use wa_kinds, only: wp
+   use wa_kinds, only: wa_wp => wp
    use wa_release, only: wa_version
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
       wa_capacity_too_small, wa_numerical_error, status_message
@@ -39,7 +42,8 @@ module wavyadhesion
    implicit none
    private
 
-   public :: wp
+   !> The library's real kind (C double): declare reals as real(wa_wp) to pass them unchanged.
+   public :: wa_wp
    public :: load_jump_energies
    public :: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &

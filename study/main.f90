@@ -15,6 +15,7 @@
 program wavyadhesion_study
    use, intrinsic :: iso_c_binding, only: c_funptr
    use wavyadhesion
+   use wa_kinds, only: wp
    use wa_gsl, only: gsl_set_error_handler_off
    use wa_study_util, only: seconds, median, spec_error, ref_table, read_table, point_set, &
       ref_states_of

@@ -3,7 +3,7 @@
 !> study/data/*.txt: alpha mu a_star c_star gap P_star zone_case).
 module wa_study_util
    use, intrinsic :: iso_fortran_env, only: int64
-   use wavyadhesion, only: wp
+   use wa_kinds, only: wp
    implicit none
    private
 

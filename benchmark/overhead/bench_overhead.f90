@@ -4,7 +4,8 @@
 !>   fpm run --profile release --example bench_overhead -- [n [repeats]]
 program bench_overhead
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
-   use wavyadhesion, only: wp, params_type, state_type, new_params, dw_equilibrium, wa_ok
+   use wa_kinds, only: wp
+   use wavyadhesion, only: params_type, state_type, new_params, dw_equilibrium, wa_ok
    implicit none
    type(params_type) :: params
    type(state_type) :: state

@@ -2,7 +2,7 @@
 !> the point solver, the paper's section 4.1 statements, JKR facts.
 module test_branch
    use wavyadhesion
-   use wa_kinds, only: pi
+   use wa_kinds, only: wp, pi
    use wa_md, only: md_load, md_opening
    use wa_dw, only: dw_residual
    use harness, only: error_type, unittest_type, new_unittest, check, check_close

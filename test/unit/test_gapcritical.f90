@@ -6,6 +6,7 @@
 module test_gapcritical
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use wavyadhesion
+   use wa_kinds, only: wp
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private

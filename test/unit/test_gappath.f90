@@ -5,6 +5,7 @@
 !> load-control jump that lands on the branch releases a finite energy >= 0.
 module test_gappath
    use wavyadhesion
+   use wa_kinds, only: wp
    use wa_gappath, only: gap_path_from_branch
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none

@@ -2,7 +2,7 @@
 module test_kernels
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use wavyadhesion
-   use wa_kinds, only: pi
+   use wa_kinds, only: wp, pi
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private

@@ -3,6 +3,7 @@
 module test_map
    use harness, only: error_type, unittest_type, new_unittest, check
    use wavyadhesion
+   use wa_kinds, only: wp
    implicit none
    private
 

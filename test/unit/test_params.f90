@@ -2,7 +2,7 @@
 module test_params
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
    use wavyadhesion
-   use wa_kinds, only: pi
+   use wa_kinds, only: wp, pi
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private

@@ -2,6 +2,7 @@
 !> every state at every tabulated (alpha, mu, a*), c* and P* to SPEC section 8's tolerance.
 module test_reference
    use wavyadhesion
+   use wa_kinds, only: wp
    use harness, only: error_type, unittest_type, new_unittest, check
    implicit none
    private

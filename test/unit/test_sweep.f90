@@ -5,6 +5,7 @@ module test_sweep
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    use wavyadhesion
+   use wa_kinds, only: wp
    implicit none
    private
 

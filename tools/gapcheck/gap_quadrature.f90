@@ -6,6 +6,7 @@
 !> log-spaced mu in [1e-3, 1e3]: failures, and the largest difference of the two rules.
 program gap_quadrature
    use wavyadhesion
+   use wa_kinds, only: wp
    use wa_gappath, only: gap_path_from_branch
    implicit none
    integer, parameter :: n = 12

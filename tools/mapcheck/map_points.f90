@@ -7,6 +7,7 @@
 !>   fpm run --profile release --example wavyadhesion-mapcheck [-- dw|md [N_ALPHA]]
 program map_points
    use wavyadhesion
+   use wa_kinds, only: wp
    implicit none
    type(map_type) :: map
    real(wp), allocatable :: alpha(:)

@@ -8,6 +8,7 @@
 !>    the mu (0.5-decade grid) where it first fails and the largest mu where it succeeds.
 program supported_range
    use wavyadhesion
+   use wa_kinds, only: wp
    implicit none
    integer, parameter :: n_a = 15
    real(wp), parameter :: a_list(n_a) = [0.0_wp, 1.0e-300_wp, 1.0e-200_wp, 1.0e-150_wp, &
