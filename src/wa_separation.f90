@@ -23,7 +23,7 @@ module wa_separation
       ieee_is_finite
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
-      set_error
+      wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type, check_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
@@ -389,7 +389,7 @@ contains
          state%gbar = 1.0_wp + h00
       else
          state%p_star = 0.0_wp - 2.0_wp*params%sigma0*c_star     ! +0 at c* = 0
-         state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*c_star)
+         state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*clausen_2pi(c_star)
       end if
    end subroutine md_no_contact_state
 
@@ -516,12 +516,17 @@ contains
          call md_no_contact_state(params, cc, s, status, errmsg, max(0.0_wp, h_top))
       else
          call md_no_contact_state(params, cc, s, status, errmsg)
-         ! at a closure round-off may leave the crest gap a hair below 0
+         ! at a closure round-off may leave the crest gap a hair below 0: try the
+         ! neighbours within 4 eps, never past 1/2 (there the crest gap is the variable)
          if (status == wa_no_solution) then
             call md_no_contact_state(params, cc*(1.0_wp - 4.0_wp*epsilon(1.0_wp)), s, &
                status, errmsg)
-            if (status /= wa_ok) call md_no_contact_state(params, &
-               cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)), s, status, errmsg)
+            if (status /= wa_ok .and. cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)) < 0.5_wp) &
+               call md_no_contact_state(params, cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)), s, &
+               status, errmsg)
+            if (status /= wa_ok) call set_error(wa_numerical_error, "md: the no-contact "// &
+               "crest gap is negative to round-off next to where it closes (not resolved "// &
+               "in double precision at this alpha, mu)", status, errmsg)
          end if
       end if
    end subroutine family_state
@@ -677,14 +682,37 @@ contains
       end if
    end function context_of
 
-   !> Crest gap of the no-contact state at c* (no checks).
+   !> Crest gap of the no-contact state at c* (no checks):
+   !>   2 Dcod - 2 C^2 + (Sigma0/pi) [Cl2(4 pi c*) - 2 Cl2(2 pi c*)].
+   !> The bracket is -2 Cl2(2 pi (1/2 - c*)) (duplication, Cl2(2t) = 2 Cl2(t) - 2 Cl2(pi - t));
+   !> for c* >= 1/4 it is evaluated so, from the exact 1/2 - c*: the two-term form rounds
+   !> 4 pi c* next to 2 pi, where Cl2 is log-singular, and Sigma0 (up to 1e22 in the domain)
+   !> magnifies that error (H(1/2) came out as -2e7 instead of 2 Dcod - 2 at mu = 2.6e14).
    elemental function crest_of(params, c_star) result(h)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: c_star
-      real(wp) :: h
-      h = 2.0_wp*params%dcod - 2.0_wp*sin(pi*c_star)**2 + (params%sigma0/pi)* &
-         (gsl_sf_clausen(4.0_wp*pi*c_star) - 2.0_wp*gsl_sf_clausen(2.0_wp*pi*c_star))
+      real(wp) :: h, bracket
+      if (c_star >= 0.25_wp) then
+         bracket = -2.0_wp*gsl_sf_clausen(2.0_wp*pi*(0.5_wp - c_star))
+      else
+         bracket = gsl_sf_clausen(4.0_wp*pi*c_star) - 2.0_wp*gsl_sf_clausen(2.0_wp*pi*c_star)
+      end if
+      h = 2.0_wp*params%dcod - 2.0_wp*sin(pi*c_star)**2 + (params%sigma0/pi)*bracket
    end function crest_of
+
+   !> Cl2(2 pi c*) for c* in [0, 1/2]. For c* >= 1/4 from d = 1/2 - c* (exact) as
+   !> Cl2(2 pi d) - Cl2(4 pi d)/2 (duplication): 2 pi c* rounds next to pi, where Cl2 has
+   !> slope -ln 2, and Sigma0 (up to 1e22) multiplies the result.
+   elemental function clausen_2pi(c_star) result(cl)
+      real(wp), intent(in) :: c_star
+      real(wp) :: cl, d
+      if (c_star >= 0.25_wp) then
+         d = 0.5_wp - c_star
+         cl = gsl_sf_clausen(2.0_wp*pi*d) - 0.5_wp*gsl_sf_clausen(4.0_wp*pi*d)
+      else
+         cl = gsl_sf_clausen(2.0_wp*pi*c_star)
+      end if
+   end function clausen_2pi
 
    !> dH/dc* = -2 pi sin(2 pi c*) - 4 Sigma0 ln(2 cos(pi c*))
    elemental function crest_slope(params, c_star) result(d)
@@ -799,7 +827,7 @@ contains
          if (ctx%c_star == 0.5_wp) then
             g = ctx%crest + 1.0_wp
          else
-            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*ctx%c_star)
+            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*clausen_2pi(ctx%c_star)
          end if
       else if (ctx%c_star == 0.5_wp .or. ctx%d2 == 0.0_wp) then
          g = gw_of(ctx%a**2, ctx%q**2)              ! case 2: uniform -Sigma0 adds no deformation

@@ -52,6 +52,7 @@ contains
          new_unittest("dw_gbar_continuous_at_corner", test_dw_corner), &
          new_unittest("solvers_fill_gbar", test_solvers_fill), &
          new_unittest("md_nocontact_family", test_family), &
+         new_unittest("md_crest_near_half", test_crest_near_half), &
          new_unittest("bad_input", test_bad_input)]
    end subroutine collect_separation
 
@@ -427,6 +428,56 @@ contains
       call check_close(error, md_no_contact_crest_gap(params, c_close(1)), 0.0_wp, 0.0_wp, &
          1.0e-13_wp, what="crest gap at the closure")
    end subroutine test_family
+
+   !> Crest gap and mean gap of the no-contact MD states at large Sigma0 against
+   !> tools/make_crest_reference.py (mpmath, 60 digits; the Clausen forms checked there against
+   !> the quadrature of the gap slope). Near c* = 1/2 the two-term Clausen form rounded 4 pi c*
+   !> next to 2 pi: H(1/2) came out as -2.5e7 instead of 2 Dcod - 2 = 4.95 at the reproducer of
+   !> the wrong-status defect, so the reopening closure and the piece-2 states went wrong.
+   subroutine test_crest_near_half(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: c_repro(6) = [0.5_wp, 0.5_wp - 2.0_wp**(-52), &
+         0.5_wp - 2.0_wp**(-40), 0.5_wp - 2.0_wp**(-20), 0.4_wp, 0.3_wp]
+      real(wp), parameter :: h_repro(6) = [4.9539749173282613126_wp, -266225860.7280932372_wp, &
+         -832827263769.28747319_wp, -423034838415301097.94_wp, -5.0069483319398392594e+21_wp, &
+         -5.4058733102602628048e+21_wp]
+      real(wp), parameter :: c_near(3) = [0.5_wp - 2.0_wp**(-45), 0.5_wp - 2.0_wp**(-36), &
+         1.0e-12_wp]
+      real(wp), parameter :: h_near(3) = [71.67989429267234775_wp, 71.381374880105640664_wp, &
+         73.680038885003214903_wp]
+      real(wp), parameter :: g_near(3) = [72.679911092398175594_wp, 72.389976339729496617_wp, &
+         74.702886991634118358_wp]
+      type(params_type) :: params
+      type(state_type) :: s
+      real(wp) :: c_close(2), g
+      integer :: i, n_close, status
+      logical :: stretch
+      character(len=200) :: msg
+
+      call new_params(194144313374.73993_wp, 256617602357780.94_wp, params, status)
+      do i = 1, size(c_repro)
+         call check_close(error, md_no_contact_crest_gap(params, c_repro(i)), h_repro(i), &
+            1.0e-12_wp, what="crest gap, Sigma0 = 8.5e21")
+      end do
+      ! closures: 2.9458563258900852743e-22, and 1/2 - 2.7e-24 (1/2 in double precision)
+      msg = ""
+      call md_no_contact_closures(params, c_close, n_close, stretch, status, msg)
+      call check(error, status == wa_ok .and. n_close == 2 .and. stretch, "closures: "//trim(msg))
+      call check_close(error, c_close(1), 2.9458563258900852743e-22_wp, 1.0e-10_wp, &
+         what="first closure")
+      call check_close(error, c_close(2), 0.5_wp, 0.0_wp, what="reopening (within 3e-24 of 1/2)")
+      call new_params(1.0e5_wp, 1.0e5_wp, params, status)
+      do i = 1, size(c_near)
+         call check_close(error, md_no_contact_crest_gap(params, c_near(i)), h_near(i), &
+            1.0e-12_wp, what="crest gap, Sigma0 = 2.1e8")
+         msg = ""
+         call md_no_contact_state(params, c_near(i), s, status, msg)
+         call check(error, status == wa_ok, "no-contact state: "//trim(msg))
+         call check_close(error, s%gbar, g_near(i), 1.0e-12_wp, what="gbar, Sigma0 = 2.1e8")
+         call state_mean_gap(model_md, params, s, g, status)
+         call check_close(error, g, g_near(i), 1.0e-12_wp, what="state_mean_gap")
+      end do
+   end subroutine test_crest_near_half
 
    subroutine test_bad_input(error)
       type(error_type), allocatable, intent(out) :: error
