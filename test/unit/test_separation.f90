@@ -53,6 +53,7 @@ contains
          new_unittest("solvers_fill_gbar", test_solvers_fill), &
          new_unittest("md_nocontact_family", test_family), &
          new_unittest("md_crest_near_half", test_crest_near_half), &
+         new_unittest("closed_forms_tiny_a_star", test_tiny_a_star), &
          new_unittest("bad_input", test_bad_input)]
    end subroutine collect_separation
 
@@ -478,6 +479,79 @@ contains
          call check_close(error, g, g_near(i), 1.0e-12_wp, what="state_mean_gap")
       end do
    end subroutine test_crest_near_half
+
+   !> Westergaard and JKR at extreme a* (issue 7: wa_profile(1, 5.53e-07, 1.3, 5.59e-266,
+   !> 5.59e-266) returned wa_numerical_error; the Westergaard traction at a* = 1e-300 was 0
+   !> with wa_ok; subnormal a* gave NaN or a JKR load 2 % off) against
+   !> test/data/separation_tiny.txt (tools/make_tiny_contact_reference.py, mpmath): the
+   !> profile through model_profile, P*, gbar and the kernels' elemental forms, relative 1e-13
+   !> or absolute 1e-320 (results in the subnormal range are rounded to its grid).
+   subroutine test_tiny_a_star(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: path = "test/data/separation_tiny.txt"
+      real(wp), parameter :: rtol = 1.0e-13_wp, atol = 1.0e-320_wp
+      real(wp) :: alpha, a, x(2), t(2), h(2), t_ref, h_ref, p_ref, g_ref
+      type(params_type) :: params
+      type(state_type) :: s
+      integer :: unit, ios, model, status, rows
+      character(len=512) :: line
+      character(len=200) :: msg
+
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      call check(error, ios == 0, "cannot open "//path)
+      if (allocated(error)) return
+      rows = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+         read (line, *) model, alpha, a, x(1), t_ref, h_ref, p_ref, g_ref
+         rows = rows + 1
+         call new_params(max(alpha, 1.0e-12_wp), 1.3_wp, params, status)
+         x(2) = a                                        ! the contact edge
+         msg = ""
+         call model_profile(model, params, a, x, t, h, s, status, msg, a)
+         call check(error, status == wa_ok, "tiny a*: "//trim(line)//": "//trim(msg))
+         if (allocated(error)) exit
+         call check_close(error, t(1), t_ref, rtol, atol, what="traction: "//trim(line))
+         call check_close(error, h(1), h_ref, rtol, atol, what="gap: "//trim(line))
+         call check_close(error, s%p_star, p_ref, rtol, atol, what="P*: "//trim(line))
+         call check_close(error, s%gbar, g_ref, rtol, atol, what="gbar: "//trim(line))
+         call check_close(error, h(2), 0.0_wp, 0.0_wp, 0.0_wp, what="gap at the edge")
+         if (model == model_jkr) then
+            call check(error, t(2) < -huge(1.0_wp), "JKR traction at the edge: -Infinity")
+            call check_close(error, jkr_load(alpha, a), p_ref, rtol, atol, what="jkr_load")
+            call check_close(error, jkr_mean_gap(alpha, a), g_ref, rtol, atol, what="jkr_mean_gap")
+         else
+            call check_close(error, t(2), 0.0_wp, 0.0_wp, 0.0_wp, what="traction at the edge")
+            call check_close(error, westergaard_load(a), p_ref, rtol, atol, what="westergaard_load")
+            call check_close(error, westergaard_mean_gap(a), g_ref, rtol, atol, &
+               what="westergaard_mean_gap")
+            call check_close(error, westergaard_pressure(a, x(1)), t_ref, rtol, atol, &
+               what="westergaard_pressure: "//trim(line))
+            call check_close(error, westergaard_gap(a, x(1)), h_ref, rtol, atol, &
+               what="westergaard_gap: "//trim(line))
+            call check_close(error, westergaard_displacement(a, x(1)), &
+               h_ref - 2.0_wp*sin(pi*x(1))**2, rtol, 1.0e-15_wp, what="westergaard_displacement")
+         end if
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      call check(error, rows == 88, "separation_tiny.txt: expected 88 rows")
+      ! the ends: a* = 0 (touching, both models): traction 0, gap 2 sin^2(pi x*);
+      ! Westergaard a* = 1/2 (full contact at P* = 1): traction 1 + cos(2 pi x*), gap 0
+      x = [0.0_wp, 0.3_wp]
+      call new_params(5.53e-7_wp, 1.3_wp, params, status)
+      do model = model_westergaard, model_jkr
+         call model_profile(model, params, 0.0_wp, x, t, h, s, status)
+         call check(error, status == wa_ok .and. all(t == 0.0_wp), "a* = 0: traction 0")
+         call check_close(error, h(2), 2.0_wp*sin(0.3_wp*pi)**2, 1.0e-15_wp, what="a* = 0 gap")
+         call check_close(error, s%gbar, 1.0_wp, 0.0_wp, what="a* = 0 gbar")
+      end do
+      call model_profile(model_westergaard, params, 0.5_wp, x, t, h, s, status)
+      call check(error, status == wa_ok .and. all(h == 0.0_wp), "a* = 1/2: gap 0")
+      call check_close(error, t(2), 1.0_wp + cos(0.6_wp*pi), 1.0e-15_wp, what="a* = 1/2 traction")
+   end subroutine test_tiny_a_star
 
    subroutine test_bad_input(error)
       type(error_type), allocatable, intent(out) :: error
