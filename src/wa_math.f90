@@ -4,7 +4,11 @@ module wa_math
    implicit none
    private
 
-   public :: log1p, sincos_pi
+   public :: log1p, sincos_pi, sin_pi_sum, sqrt_sin_pi, sqrt_sin_pi_sum, edge_asinh
+
+   !> Below this x, sin(pi x) = pi x to rounding ((pi x)^2/6 < 1e-299)
+   real(wp), parameter :: small_angle = 1.0e-150_wp
+   real(wp), parameter :: sqrt_pi = 1.7724538509055160272981674833411452_wp
 
 contains
 
@@ -38,5 +42,58 @@ contains
          c = sin(angle)
       end if
    end subroutine sincos_pi
+
+   !> sin(pi (u + v)) for u, v in [0, 1/2], from 1 - u - v = (1/2 - u) + (1/2 - v) past 1/2.
+   elemental function sin_pi_sum(u, v) result(y)
+      real(wp), intent(in) :: u, v
+      real(wp) :: y
+      if (u + v <= 0.5_wp) then
+         y = sin(pi*(u + v))
+      else
+         y = sin(pi*((0.5_wp - u) + (0.5_wp - v)))
+      end if
+   end function sin_pi_sum
+
+   !> sqrt(sin(pi x)) for x in [0, 1/2], to full relative accuracy down to the smallest
+   !> subnormal x: below small_angle as sqrt(pi) sqrt(x) (pi x itself would be rounded to
+   !> the subnormal grid, a 30 % step at x = 5e-324).
+   elemental function sqrt_sin_pi(x) result(y)
+      real(wp), intent(in) :: x
+      real(wp) :: y
+      if (x < small_angle) then
+         y = sqrt_pi*sqrt(x)
+      else
+         y = sqrt(sin(pi*x))
+      end if
+   end function sqrt_sin_pi
+
+   !> sqrt(sin(pi (u + v))) for u, v in [0, 1/2] (sqrt_sin_pi where u + v is small).
+   elemental function sqrt_sin_pi_sum(u, v) result(y)
+      real(wp), intent(in) :: u, v
+      real(wp) :: y
+      if (u + v < small_angle) then
+         y = sqrt_sin_pi(u + v)
+      else
+         y = sqrt(sin_pi_sum(u, v))
+      end if
+   end function sqrt_sin_pi_sum
+
+   !> asinh(r/A), r/A = sqrt(S^2 - A^2)/A, outside a contact of half-width a*
+   !> (0 < a* < x <= 1/2; A = sin(pi a*), S = sin(pi x), S^2 - A^2 = sin(pi (x - a*))
+   !> sin(pi (x + a*))). r/A = t1 t2, t1, t2 the root ratios (< 3e161 each), and where
+   !> their product could overflow asinh = ln 2 + ln t1 + ln t2 (1/(4 t^2) < 1e-200 then):
+   !> neither A nor A^2 is formed (a* down to 5e-324).
+   elemental function edge_asinh(a_star, x) result(y)
+      real(wp), intent(in) :: a_star, x
+      real(wp) :: y, root_a, t1, t2
+      root_a = sqrt_sin_pi(a_star)
+      t1 = sqrt_sin_pi(x - a_star)/root_a
+      t2 = sqrt_sin_pi_sum(x, a_star)/root_a
+      if (t1 < 1.0e100_wp .and. t2 < 1.0e100_wp) then
+         y = asinh(t1*t2)
+      else
+         y = log(2.0_wp) + log(t1) + log(t2)
+      end if
+   end function edge_asinh
 
 end module wa_math

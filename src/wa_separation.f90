@@ -23,14 +23,15 @@ module wa_separation
       ieee_is_finite
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
-      set_error
+      wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type, check_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       zone_no_contact, model_westergaard, model_jkr, model_dw, model_md
    use wa_gsl, only: gsl_sf_clausen
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_math, only: log1p
+   use wa_math, only: log1p, sin_pi_sum, sqrt_sin_pi, sqrt_sin_pi_sum
+   use wa_kernels, only: small_contact_gap, sqrt_tiny, shape
    implicit none
    private
 
@@ -389,7 +390,7 @@ contains
          state%gbar = 1.0_wp + h00
       else
          state%p_star = 0.0_wp - 2.0_wp*params%sigma0*c_star     ! +0 at c* = 0
-         state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*c_star)
+         state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*clausen_2pi(c_star)
       end if
    end subroutine md_no_contact_state
 
@@ -516,12 +517,17 @@ contains
          call md_no_contact_state(params, cc, s, status, errmsg, max(0.0_wp, h_top))
       else
          call md_no_contact_state(params, cc, s, status, errmsg)
-         ! at a closure round-off may leave the crest gap a hair below 0
+         ! at a closure round-off may leave the crest gap a hair below 0: try the
+         ! neighbours within 4 eps, never past 1/2 (there the crest gap is the variable)
          if (status == wa_no_solution) then
             call md_no_contact_state(params, cc*(1.0_wp - 4.0_wp*epsilon(1.0_wp)), s, &
                status, errmsg)
-            if (status /= wa_ok) call md_no_contact_state(params, &
-               cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)), s, status, errmsg)
+            if (status /= wa_ok .and. cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)) < 0.5_wp) &
+               call md_no_contact_state(params, cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)), s, &
+               status, errmsg)
+            if (status /= wa_ok) call set_error(wa_numerical_error, "md: the no-contact "// &
+               "crest gap is negative to round-off next to where it closes (not resolved "// &
+               "in double precision at this alpha, mu)", status, errmsg)
          end if
       end if
    end subroutine family_state
@@ -552,17 +558,6 @@ contains
          if (term < 1.0e-18_wp*g) exit
       end do
    end function gw_of
-
-   !> sin(pi (u + v)) for u, v in [0, 1/2], from 1 - u - v = (1/2 - u) + (1/2 - v) past 1/2.
-   elemental function sin_pi_sum(u, v) result(y)
-      real(wp), intent(in) :: u, v
-      real(wp) :: y
-      if (u + v <= 0.5_wp) then
-         y = sin(pi*(u + v))
-      else
-         y = sin(pi*((0.5_wp - u) + (0.5_wp - v)))
-      end if
-   end function sin_pi_sum
 
    !> sin(pi (c* + v)) for v in [0, 1/2], from 1/2 - c* (ctx%hmc) past 1/2.
    elemental function sin_pi_c_plus(ctx, v) result(y)
@@ -677,14 +672,37 @@ contains
       end if
    end function context_of
 
-   !> Crest gap of the no-contact state at c* (no checks).
+   !> Crest gap of the no-contact state at c* (no checks):
+   !>   2 Dcod - 2 C^2 + (Sigma0/pi) [Cl2(4 pi c*) - 2 Cl2(2 pi c*)].
+   !> The bracket is -2 Cl2(2 pi (1/2 - c*)) (duplication, Cl2(2t) = 2 Cl2(t) - 2 Cl2(pi - t));
+   !> for c* >= 1/4 it is evaluated so, from the exact 1/2 - c*: the two-term form rounds
+   !> 4 pi c* next to 2 pi, where Cl2 is log-singular, and Sigma0 (up to 1e22 in the domain)
+   !> magnifies that error (H(1/2) came out as -2e7 instead of 2 Dcod - 2 at mu = 2.6e14).
    elemental function crest_of(params, c_star) result(h)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: c_star
-      real(wp) :: h
-      h = 2.0_wp*params%dcod - 2.0_wp*sin(pi*c_star)**2 + (params%sigma0/pi)* &
-         (gsl_sf_clausen(4.0_wp*pi*c_star) - 2.0_wp*gsl_sf_clausen(2.0_wp*pi*c_star))
+      real(wp) :: h, bracket
+      if (c_star >= 0.25_wp) then
+         bracket = -2.0_wp*gsl_sf_clausen(2.0_wp*pi*(0.5_wp - c_star))
+      else
+         bracket = gsl_sf_clausen(4.0_wp*pi*c_star) - 2.0_wp*gsl_sf_clausen(2.0_wp*pi*c_star)
+      end if
+      h = 2.0_wp*params%dcod - 2.0_wp*sin(pi*c_star)**2 + (params%sigma0/pi)*bracket
    end function crest_of
+
+   !> Cl2(2 pi c*) for c* in [0, 1/2]. For c* >= 1/4 from d = 1/2 - c* (exact) as
+   !> Cl2(2 pi d) - Cl2(4 pi d)/2 (duplication): 2 pi c* rounds next to pi, where Cl2 has
+   !> slope -ln 2, and Sigma0 (up to 1e22) multiplies the result.
+   elemental function clausen_2pi(c_star) result(cl)
+      real(wp), intent(in) :: c_star
+      real(wp) :: cl, d
+      if (c_star >= 0.25_wp) then
+         d = 0.5_wp - c_star
+         cl = gsl_sf_clausen(2.0_wp*pi*d) - 0.5_wp*gsl_sf_clausen(4.0_wp*pi*d)
+      else
+         cl = gsl_sf_clausen(2.0_wp*pi*c_star)
+      end if
+   end function clausen_2pi
 
    !> dH/dc* = -2 pi sin(2 pi c*) - 4 Sigma0 ln(2 cos(pi c*))
    elemental function crest_slope(params, c_star) result(d)
@@ -799,7 +817,7 @@ contains
          if (ctx%c_star == 0.5_wp) then
             g = ctx%crest + 1.0_wp
          else
-            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*gsl_sf_clausen(2.0_wp*pi*ctx%c_star)
+            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*clausen_2pi(ctx%c_star)
          end if
       else if (ctx%c_star == 0.5_wp .or. ctx%d2 == 0.0_wp) then
          g = gw_of(ctx%a**2, ctx%q**2)              ! case 2: uniform -Sigma0 adds no deformation
@@ -845,7 +863,7 @@ contains
       type(separation_context), intent(in) :: ctx
       real(wp), intent(in) :: xr
       real(wp) :: p
-      real(wp) :: cx, ra, rc
+      real(wp) :: cx, ra, rc, r1, r2
 
       p = 0.0_wp
       cx = sin(pi*(0.5_wp - xr))
@@ -857,14 +875,27 @@ contains
          if (xr <= ctx%c_star .and. ctx%c_star > 0.0_wp) p = -ctx%sigma0
          return
       end if
+      ! ra = sqrt(A^2 - S^2) = r1 r2; r1 = ra, r2 = 1 unless A^2 - S^2 is subnormal or 0
+      ! (a* below 1e-154), then r1, r2 = sqrt(sin(pi (a* -+ x*))), kept apart
       ra = 0.0_wp
-      if (xr < ctx%a_star) ra = sqrt(sin(pi*(ctx%a_star - xr))*sin_pi_sum(ctx%a_star, xr))
+      r2 = 1.0_wp
+      if (xr < ctx%a_star) then
+         ra = sin(pi*(ctx%a_star - xr))*sin_pi_sum(ctx%a_star, xr)
+         if (ra >= tiny(ra)) then
+            ra = sqrt(ra)
+            r1 = ra
+         else
+            r1 = sqrt_sin_pi(ctx%a_star - xr)
+            r2 = sqrt_sin_pi_sum(ctx%a_star, xr)
+            ra = r1*r2
+         end if
+      end if
       select case (ctx%model)
       case (model_westergaard)
-         if (xr < ctx%a_star) p = 2.0_wp*cx*ra
+         if (xr < ctx%a_star) p = 2.0_wp*cx*r1*r2
       case (model_jkr)
          if (xr < ctx%a_star) then
-            p = 2.0_wp*cx*ra + (ctx%p_star - ctx%a**2)*cx/ra
+            p = 2.0_wp*cx*r1*r2 + (ctx%p_star - ctx%a**2)*cx/r1/r2
          else if (xr == ctx%a_star .and. ctx%p_star < ctx%a**2) then
             p = ieee_value(p, ieee_negative_inf)
          end if
@@ -893,7 +924,7 @@ contains
       type(separation_context), intent(in) :: ctx
       real(wp), intent(in) :: xr
       real(wp) :: h
-      real(wp) :: s, r
+      real(wp) :: s, r, t
 
       h = 0.0_wp
       if (ctx%zone == zone_full_contact) return
@@ -907,6 +938,14 @@ contains
          return
       end if
       if (xr <= ctx%a_star) return
+      if (ctx%a > 0.0_wp .and. ctx%a < sqrt_tiny .and. (ctx%model == model_westergaard .or. &
+            ctx%model == model_jkr)) then
+         ! A^2 subnormal or 0 (a* below 4.7e-155): t = asinh(r/A) from root ratios
+         call small_contact_gap(ctx%a_star, xr, h, t)
+         if (ctx%model == model_jkr) h = h + 2.0_wp*(ctx%a**2 - ctx%p_star)*t
+         h = max(0.0_wp, h)
+         return
+      end if
       r = sqrt(sin(pi*(xr - ctx%a_star))*sin_pi_sum(xr, ctx%a_star))
       h = shape(ctx%a, s, r)
       select case (ctx%model)
@@ -924,37 +963,6 @@ contains
       end select
       h = max(0.0_wp, h)
    end function gap_at
-
-   !> 2 [S r - A^2 asinh(r/A)]: the gap outside a Westergaard contact (A > 0), 2 S^2 at A = 0.
-   !> With t = r/A it is 2 A^2 f(t), f = t sqrt(1+t^2) - asinh t = 2 sum_k c_k t^(2k+3)/(2k+3),
-   !> c_k the coefficients of (1+u)^(-1/2): the series for t < 1/2 (DW multiplies the gap in
-   !> the zone by 1 + lambda, up to 1e20, so it must keep its relative accuracy as t -> 0).
-   elemental function shape(a, s, r) result(h)
-      real(wp), intent(in) :: a, s, r
-      real(wp) :: h
-      real(wp) :: t, t2, term, ck, total
-      integer :: k
-      if (a <= 0.0_wp) then
-         h = 2.0_wp*s*s
-         return
-      end if
-      t = r/a
-      if (t >= 0.5_wp) then
-         h = 2.0_wp*(s*r - a*a*asinh(t))
-         return
-      end if
-      t2 = t*t
-      ck = 1.0_wp
-      term = t*t2
-      total = term/3.0_wp
-      do k = 1, 40
-         ck = -ck*real(2*k - 1, wp)/real(2*k, wp)
-         term = term*t2
-         total = total + ck*term/real(2*k + 3, wp)
-         if (abs(term) < 1.0e-17_wp*total) exit
-      end do
-      h = 4.0_wp*a*a*total
-   end function shape
 
    !> h_W(a) - h_W(c) beyond c (x* > c*), as a sum of non-negative terms and an O(d2^2)
    !> term, d2 = C^2 - A^2 (doc/theory.md): accurate however large lambda.

@@ -277,3 +277,46 @@ def test_sweep_domain_checked_before_any_work(monkeypatch, alpha, mu, name, inde
     with pytest.raises(wa.InvalidArgumentError, match=rf"{name} .*index \{index[:-1]}\)"):
         wa.critical_forces("dw", alpha, mu)
     assert calls == [1]                  # only the call that words the message
+
+
+# ---- issue 2: MD at huge Sigma0 blamed an argument the caller never passed ----------
+
+REPRO_MD = (194144313374.73993, 256617602357780.94)
+
+
+@pytest.mark.parametrize("call", [
+    lambda a, m: wa.trace_branch("md", a, m),
+    lambda a, m: wa.critical_forces("md", a, m),
+    lambda a, m: wa.gap_path("md", a, m),
+    lambda a, m: wa.gap_law("md", a, m, [0.5, 2.0]),
+    lambda a, m: wa.gap_critical("md", a, m),
+], ids=["trace_branch", "critical_forces", "gap_path", "gap_law", "gap_critical"])
+def test_md_huge_sigma0_is_an_honest_numerical_error(call):
+    """Formerly InvalidArgumentError "c_star = 5.00000E-01 is outside its valid range"."""
+    with pytest.raises(wa.ConvergenceError) as info:
+        call(*REPRO_MD)
+    assert not isinstance(info.value, wa.InvalidArgumentError)
+    assert info.value.status == 5
+    assert "closer than 1e-15 to a* = 1/2" in info.value.message
+
+
+# ---- issue 7: Westergaard and JKR profiles at extreme a* ---------------------------
+
+def test_jkr_profile_tiny_a_star_reproducer():
+    """wa_profile(1, 5.53e-07, 1.3, 5.59e-266, 5.59e-266) was NUMERICAL_ERROR; values from
+    test/data/separation_tiny.txt (mpmath, tools/make_tiny_contact_reference.py)."""
+    a = 5.59e-266
+    prof = wa.profile("jkr", 5.53e-07, 1.3, a, a, x=[0.0, 2 * a, 0.25])
+    expected_t = -1.3196060288092605297e+126
+    expected_g = 6.1039062979136195849e-139
+    assert prof.traction[0] == pytest.approx(expected_t, rel=1e-13)
+    assert prof.gap[1] == pytest.approx(expected_g, rel=1e-13)
+    assert prof.gap[2] == pytest.approx(1.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("a", [5e-324, 1e-300, 1e-266])
+def test_westergaard_profile_tiny_a_star_is_finite(a):
+    prof = wa.profile("westergaard", 0.3, 0.0, a, a, x=[0.0, 0.25, 0.5])
+    assert np.all(np.isfinite(prof.traction)) and np.all(np.isfinite(prof.gap))
+    assert prof.traction[0] == pytest.approx(2 * np.pi * a, rel=1e-13, abs=1e-320)
+    assert prof.gap[1] == pytest.approx(1.0, rel=1e-15)

@@ -23,7 +23,8 @@ contains
          new_unittest("dw_roots_tiny_alpha", test_dw_roots_tiny_alpha), &
          new_unittest("dw_trace_large_mu", test_dw_trace_large_mu), &
          new_unittest("dw_shallow_corner_minimum", test_dw_shallow_corner), &
-         new_unittest("dw_case1_root_born_at_a_start", test_dw_root_at_start)]
+         new_unittest("dw_case1_root_born_at_a_start", test_dw_root_at_start), &
+         new_unittest("md_huge_sigma0_no_c_star_blame", test_md_no_c_star_blame)]
    end subroutine collect_robustness
 
    type(params_type) function params_of(alpha, mu) result(params)
@@ -226,5 +227,35 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_dw_root_at_start
+
+   !> MD at alpha = 1.94e11, mu = 2.57e14 (Sigma0 = 8.5e21; issue 2): trace_branch,
+   !> critical_forces, gap_path, gap_law and gap_critical returned wa_invalid_argument
+   !> "c_star = 5.00000E-01 is outside its valid range" though no c* was passed: the crest
+   !> gap's reopening (1/2 - 2.7e-24, mpmath) rounded to 1/2 - 3e-16 with a crest gap of
+   !> -7e7 (the Clausen form lost every digit there) and the retry nudged c* past 1/2. Now
+   !> the crest gap is exact there (test_separation, md_crest_near_half) and these give the
+   !> branch's own honest status: the zone reaches c* = 1/2 within 1e-15 of a* = 1/2 (JKR limit).
+   subroutine test_md_no_c_star_blame(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: p
+      type(branch_type) :: br
+      type(gap_path_type) :: gp
+      type(gap_critical_type) :: gc
+      real(wp) :: p_fc, p_pf, g(2), pa(2), pr(2), da(2), dr(2)
+      integer :: st(5), k
+      character(len=300) :: msg(5)
+      p = params_of(194144313374.73993_wp, 256617602357780.94_wp)
+      g = [0.5_wp, 2.0_wp]
+      msg = ""
+      call trace_branch(model_md, p, br, st(1), msg(1))
+      call critical_forces(model_md, p, p_fc, p_pf, st(2), msg(2))
+      call gap_path(model_md, p, gp, st(3), msg(3))
+      call gap_law(model_md, p, g, pa, pr, da, dr, st(4), msg(4))
+      call gap_critical(model_md, p, gc, st(5), msg(5))
+      do k = 1, 5
+         call check(error, st(k) == wa_numerical_error .and. index(msg(k), "c* = 1/2 closer "// &
+            "than 1e-15 to a* = 1/2") > 0, "huge Sigma0: "//trim(msg(k)))
+      end do
+   end subroutine test_md_no_c_star_blame
 
 end module test_robustness

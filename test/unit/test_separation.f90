@@ -52,6 +52,8 @@ contains
          new_unittest("dw_gbar_continuous_at_corner", test_dw_corner), &
          new_unittest("solvers_fill_gbar", test_solvers_fill), &
          new_unittest("md_nocontact_family", test_family), &
+         new_unittest("md_crest_near_half", test_crest_near_half), &
+         new_unittest("closed_forms_tiny_a_star", test_tiny_a_star), &
          new_unittest("bad_input", test_bad_input)]
    end subroutine collect_separation
 
@@ -427,6 +429,129 @@ contains
       call check_close(error, md_no_contact_crest_gap(params, c_close(1)), 0.0_wp, 0.0_wp, &
          1.0e-13_wp, what="crest gap at the closure")
    end subroutine test_family
+
+   !> Crest gap and mean gap of the no-contact MD states at large Sigma0 against
+   !> tools/make_crest_reference.py (mpmath, 60 digits; the Clausen forms checked there against
+   !> the quadrature of the gap slope). Near c* = 1/2 the two-term Clausen form rounded 4 pi c*
+   !> next to 2 pi: H(1/2) came out as -2.5e7 instead of 2 Dcod - 2 = 4.95 at the reproducer of
+   !> the wrong-status defect, so the reopening closure and the piece-2 states went wrong.
+   subroutine test_crest_near_half(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: c_repro(6) = [0.5_wp, 0.5_wp - 2.0_wp**(-52), &
+         0.5_wp - 2.0_wp**(-40), 0.5_wp - 2.0_wp**(-20), 0.4_wp, 0.3_wp]
+      real(wp), parameter :: h_repro(6) = [4.9539749173282613126_wp, -266225860.7280932372_wp, &
+         -832827263769.28747319_wp, -423034838415301097.94_wp, -5.0069483319398392594e+21_wp, &
+         -5.4058733102602628048e+21_wp]
+      real(wp), parameter :: c_near(3) = [0.5_wp - 2.0_wp**(-45), 0.5_wp - 2.0_wp**(-36), &
+         1.0e-12_wp]
+      real(wp), parameter :: h_near(3) = [71.67989429267234775_wp, 71.381374880105640664_wp, &
+         73.680038885003214903_wp]
+      real(wp), parameter :: g_near(3) = [72.679911092398175594_wp, 72.389976339729496617_wp, &
+         74.702886991634118358_wp]
+      type(params_type) :: params
+      type(state_type) :: s
+      real(wp) :: c_close(2), g
+      integer :: i, n_close, status
+      logical :: stretch
+      character(len=200) :: msg
+
+      call new_params(194144313374.73993_wp, 256617602357780.94_wp, params, status)
+      do i = 1, size(c_repro)
+         call check_close(error, md_no_contact_crest_gap(params, c_repro(i)), h_repro(i), &
+            1.0e-12_wp, what="crest gap, Sigma0 = 8.5e21")
+      end do
+      ! closures: 2.9458563258900852743e-22, and 1/2 - 2.7e-24 (1/2 in double precision)
+      msg = ""
+      call md_no_contact_closures(params, c_close, n_close, stretch, status, msg)
+      call check(error, status == wa_ok .and. n_close == 2 .and. stretch, "closures: "//trim(msg))
+      call check_close(error, c_close(1), 2.9458563258900852743e-22_wp, 1.0e-10_wp, &
+         what="first closure")
+      call check_close(error, c_close(2), 0.5_wp, 0.0_wp, what="reopening (within 3e-24 of 1/2)")
+      call new_params(1.0e5_wp, 1.0e5_wp, params, status)
+      do i = 1, size(c_near)
+         call check_close(error, md_no_contact_crest_gap(params, c_near(i)), h_near(i), &
+            1.0e-12_wp, what="crest gap, Sigma0 = 2.1e8")
+         msg = ""
+         call md_no_contact_state(params, c_near(i), s, status, msg)
+         call check(error, status == wa_ok, "no-contact state: "//trim(msg))
+         call check_close(error, s%gbar, g_near(i), 1.0e-12_wp, what="gbar, Sigma0 = 2.1e8")
+         call state_mean_gap(model_md, params, s, g, status)
+         call check_close(error, g, g_near(i), 1.0e-12_wp, what="state_mean_gap")
+      end do
+   end subroutine test_crest_near_half
+
+   !> Westergaard and JKR at extreme a* (issue 7: wa_profile(1, 5.53e-07, 1.3, 5.59e-266,
+   !> 5.59e-266) returned wa_numerical_error; the Westergaard traction at a* = 1e-300 was 0
+   !> with wa_ok; subnormal a* gave NaN or a JKR load 2 % off) against
+   !> test/data/separation_tiny.txt (tools/make_tiny_contact_reference.py, mpmath): the
+   !> profile through model_profile, P*, gbar and the kernels' elemental forms, relative 1e-13
+   !> or absolute 1e-320 (results in the subnormal range are rounded to its grid).
+   subroutine test_tiny_a_star(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: path = "test/data/separation_tiny.txt"
+      real(wp), parameter :: rtol = 1.0e-13_wp, atol = 1.0e-320_wp
+      real(wp) :: alpha, a, x(2), t(2), h(2), t_ref, h_ref, p_ref, g_ref
+      type(params_type) :: params
+      type(state_type) :: s
+      integer :: unit, ios, model, status, rows
+      character(len=512) :: line
+      character(len=200) :: msg
+
+      open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+      call check(error, ios == 0, "cannot open "//path)
+      if (allocated(error)) return
+      rows = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == "#" .or. len_trim(line) == 0) cycle
+         read (line, *) model, alpha, a, x(1), t_ref, h_ref, p_ref, g_ref
+         rows = rows + 1
+         call new_params(max(alpha, 1.0e-12_wp), 1.3_wp, params, status)
+         x(2) = a                                        ! the contact edge
+         msg = ""
+         call model_profile(model, params, a, x, t, h, s, status, msg, a)
+         call check(error, status == wa_ok, "tiny a*: "//trim(line)//": "//trim(msg))
+         if (allocated(error)) exit
+         call check_close(error, t(1), t_ref, rtol, atol, what="traction: "//trim(line))
+         call check_close(error, h(1), h_ref, rtol, atol, what="gap: "//trim(line))
+         call check_close(error, s%p_star, p_ref, rtol, atol, what="P*: "//trim(line))
+         call check_close(error, s%gbar, g_ref, rtol, atol, what="gbar: "//trim(line))
+         call check_close(error, h(2), 0.0_wp, 0.0_wp, 0.0_wp, what="gap at the edge")
+         if (model == model_jkr) then
+            call check(error, t(2) < -huge(1.0_wp), "JKR traction at the edge: -Infinity")
+            call check_close(error, jkr_load(alpha, a), p_ref, rtol, atol, what="jkr_load")
+            call check_close(error, jkr_mean_gap(alpha, a), g_ref, rtol, atol, what="jkr_mean_gap")
+         else
+            call check_close(error, t(2), 0.0_wp, 0.0_wp, 0.0_wp, what="traction at the edge")
+            call check_close(error, westergaard_load(a), p_ref, rtol, atol, what="westergaard_load")
+            call check_close(error, westergaard_mean_gap(a), g_ref, rtol, atol, &
+               what="westergaard_mean_gap")
+            call check_close(error, westergaard_pressure(a, x(1)), t_ref, rtol, atol, &
+               what="westergaard_pressure: "//trim(line))
+            call check_close(error, westergaard_gap(a, x(1)), h_ref, rtol, atol, &
+               what="westergaard_gap: "//trim(line))
+            call check_close(error, westergaard_displacement(a, x(1)), &
+               h_ref - 2.0_wp*sin(pi*x(1))**2, rtol, 1.0e-15_wp, what="westergaard_displacement")
+         end if
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      call check(error, rows == 88, "separation_tiny.txt: expected 88 rows")
+      ! the ends: a* = 0 (touching, both models): traction 0, gap 2 sin^2(pi x*);
+      ! Westergaard a* = 1/2 (full contact at P* = 1): traction 1 + cos(2 pi x*), gap 0
+      x = [0.0_wp, 0.3_wp]
+      call new_params(5.53e-7_wp, 1.3_wp, params, status)
+      do model = model_westergaard, model_jkr
+         call model_profile(model, params, 0.0_wp, x, t, h, s, status)
+         call check(error, status == wa_ok .and. all(t == 0.0_wp), "a* = 0: traction 0")
+         call check_close(error, h(2), 2.0_wp*sin(0.3_wp*pi)**2, 1.0e-15_wp, what="a* = 0 gap")
+         call check_close(error, s%gbar, 1.0_wp, 0.0_wp, what="a* = 0 gbar")
+      end do
+      call model_profile(model_westergaard, params, 0.5_wp, x, t, h, s, status)
+      call check(error, status == wa_ok .and. all(h == 0.0_wp), "a* = 1/2: gap 0")
+      call check_close(error, t(2), 1.0_wp + cos(0.6_wp*pi), 1.0e-15_wp, what="a* = 1/2 traction")
+   end subroutine test_tiny_a_star
 
    subroutine test_bad_input(error)
       type(error_type), allocatable, intent(out) :: error
