@@ -17,7 +17,7 @@ program wavyadhesion_cli
    type(params_type) :: params
    !> Where the table goes; usage_error and numerical_error discard it
    type(sink_type) :: out
-   logical :: ok, rows_failed
+   logical :: ok, rows_failed, no_directory
 
    call parse_command_line(opts, error)
    if (allocated(error)) call usage_error(error)
@@ -31,7 +31,11 @@ program wavyadhesion_cli
    end if
    if ((opts%command /= "critical" .and. opts%command /= "map") .or. si_given(opts)) &
       call resolve_params(opts, params)
-   call open_sink(out, opts%output, ok)
+   call open_sink(out, opts%output, ok, no_directory)
+   if (.not. ok .and. no_directory) then            ! a bad --output: a usage error
+      write (error_unit, '(a)') "Try 'wavyadhesion --help'."
+      stop 2, quiet=.true.
+   end if
    if (.not. ok) stop 1, quiet=.true.               ! a write error (its reason is printed)
 
    rows_failed = .false.
