@@ -9,7 +9,7 @@
 
 Usage (after ``pip install ./python``; POSIX only for part 2)::
 
-    python python/benchmarks/bench_interrupt.py [--repeats 7] [--full]
+    python python/benchmarks/bench_interrupt.py [--repeats 7] [--full] [--short-only]
 
 To compare with another build, run it in both virtual environments and keep the best of
 several runs (the timings of a shared machine vary by 2x).
@@ -81,6 +81,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--full", action="store_true",
                         help="also time each long call to its end")
+    parser.add_argument("--short-only", action="store_true", help="part 1 only")
     args = parser.parse_args()
     r = args.repeats
     mu200 = np.logspace(-2, 1, 200)
@@ -97,6 +98,8 @@ def main():
     print("short calls (best wall time per call)")
     for name, f, number in rows:
         print(f"  {name:26s} {best(f, r, number) * 1e3:10.3f} ms")
+    if args.short_only:
+        return
     if os.name != "posix":
         print("time to interrupt: POSIX only")
         return
