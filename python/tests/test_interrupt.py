@@ -92,3 +92,14 @@ def test_long_call_stops_on_sigint(call, bound):
             child.wait()
     assert out.strip() == "interrupted" and child.returncode == 130
     assert waited < bound, f"{waited:.1f} s from SIGINT to exit"
+
+
+def test_gap_law_in_chunks_equals_one_call():
+    # 70000 mean gaps: two facade calls of at most 65536, each walking the cycle again
+    g = np.linspace(0.0, 1.3, 70000)
+    law = wa.gap_law("md", 0.3, 1.0, g)
+    *values, w, wf, status, _ = _f.fa_gap_law(_core.MODELS["md"], 0.3, 1.0, g)
+    assert status == 0 and _core._CHUNK_GAPS < g.size
+    for got, want in zip(law[1:5], values):
+        assert np.array_equal(got, want)
+    assert (law.W_star, law.W_fraction) == (w, wf)
