@@ -7,7 +7,8 @@ program wavyadhesion_cli
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wavyadhesion
    use wa_kinds, only: wp
-   use wa_cli_options, only: cli_options, parse_command_line, model_name, given, si_given
+   use wa_cli_options, only: cli_options, parse_command_line, model_name, given, si_given, &
+      option_message
    use wa_cli_table, only: write_header, write_row, format_real
    use wa_cli_output, only: sink_type, open_sink, put_line, close_sink, discard_sink
    implicit none
@@ -17,7 +18,7 @@ program wavyadhesion_cli
    type(params_type) :: params
    !> Where the table goes; usage_error and numerical_error discard it
    type(sink_type) :: out
-   logical :: ok, rows_failed
+   logical :: ok, rows_failed, no_directory
 
    call parse_command_line(opts, error)
    if (allocated(error)) call usage_error(error)
@@ -31,11 +32,12 @@ program wavyadhesion_cli
    end if
    if ((opts%command /= "critical" .and. opts%command /= "map") .or. si_given(opts)) &
       call resolve_params(opts, params)
-   call open_sink(out, opts%output, ok)
-   if (.not. ok) then
+   call open_sink(out, opts%output, ok, no_directory)
+   if (.not. ok .and. no_directory) then            ! a bad --output: a usage error
       write (error_unit, '(a)') "Try 'wavyadhesion --help'."
       stop 2, quiet=.true.
    end if
+   if (.not. ok) stop 1, quiet=.true.               ! a write error (its reason is printed)
 
    rows_failed = .false.
    select case (opts%command)
@@ -91,11 +93,11 @@ contains
          estar = opts%estar
          if (.not. given(opts, "--Estar")) then
             call reduced_modulus(opts%e1, opts%nu1, opts%e2, opts%nu2, estar, status, msg)
-            if (status /= wa_ok) call usage_error("--E1/--nu1/--E2/--nu2: "//trim(msg))
+            if (status /= wa_ok) call usage_error("--E1/--nu1/--E2/--nu2: "//option_message(trim(msg)))
          end if
          call dimensional_params(estar, opts%period, opts%amplitude, opts%work, opts%peak, &
             params, scales, status, msg)
-         if (status /= wa_ok) call usage_error(trim(msg))
+         if (status /= wa_ok) call usage_error(option_message(trim(msg)))
          return
       end if
       alpha = 0.3_wp
@@ -103,7 +105,7 @@ contains
       if (allocated(opts%alpha)) alpha = single(opts%alpha, "--alpha")
       if (allocated(opts%mu)) mu = single(opts%mu, "--mu")
       call new_params(alpha, mu, params, status, msg)
-      if (status /= wa_ok) call usage_error("--"//trim(msg))
+      if (status /= wa_ok) call usage_error(option_message(trim(msg)))
    end subroutine resolve_params
 
    real(wp) function single(values, name)
@@ -237,7 +239,7 @@ contains
          call model_profile(opts%model, params, a_star, x, traction, gap, state, status, msg)
          which = "the principal state"
       end if
-      if (status == wa_invalid_argument) call usage_error("--"//trim(msg))
+      if (status == wa_invalid_argument) call usage_error(option_message(trim(msg)))
       if (status /= wa_ok) call numerical_error(status, trim(msg))
       notes(1) = "state: "//which
       notes(2) = "a_star = "//format_real(state%a_star)//"  c_star = "// &
@@ -646,11 +648,11 @@ contains
       msg = ""
       do i = 1, size(alpha)
          call new_params(alpha(i), 1.0_wp, params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
+         if (status /= wa_ok) call usage_error(option_message(trim(msg)))
       end do
       do i = 1, size(mu)
          call new_params(1.0_wp, mu(i), params, status, msg)
-         if (status /= wa_ok) call usage_error("--"//trim(msg))
+         if (status /= wa_ok) call usage_error(option_message(trim(msg)))
       end do
    end subroutine critical_grid
 

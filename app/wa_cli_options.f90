@@ -8,7 +8,8 @@ module wa_cli_options
    implicit none
    private
 
-   public :: cli_options, parse_command_line, parse_real_list, model_name, given, si_given
+   public :: cli_options, parse_command_line, parse_real_list, model_name, given, si_given, &
+      option_message
 
    integer, parameter :: max_values = 100000
    !> The SI options: moduli (1-4), Estar (5), geometry and adhesion (6-9).
@@ -272,7 +273,7 @@ contains
       !> The option's name in messages (default --mu-range)
       character(len=*), intent(in), optional :: option
       character(len=:), allocatable :: name
-      character(len=*), parameter :: form = "expected LO:HI:N[:log] with 0 <= LO <= HI "// &
+      character(len=*), parameter :: form = "LO:HI:N[:log] with 0 <= LO <= HI "// &
          "(LO > 0 with :log) and N an integer in [1, 100000]"
       character(len=:), allocatable :: part(:)
       real(wp) :: lo, hi
@@ -283,12 +284,12 @@ contains
       if (present(option)) name = option
       call split(text, ":", part)
       if (size(part) < 3 .or. size(part) > 4) then
-         error = name//": '"//text//"' is not LO:HI:N[:log] ("//form//")"
+         error = name//": '"//text//"' is not LO:HI:N[:log] (expected "//form//")"
          return
       end if
       logscale = size(part) == 4
       if (logscale .and. trim(part(min(4, size(part)))) /= "log") then
-         error = name//": '"//trim(part(4))//"' is not 'log' ("//form//")"
+         error = name//": '"//trim(part(4))//"' is not 'log' (expected "//form//")"
          return
       end if
       call parse_real(trim(part(1)), name//" LO", lo, error, form)
@@ -302,9 +303,9 @@ contains
       if (ios /= 0 .or. n < 1 .or. n > max_values) then
          error = name//": N = '"//trim(part(3))//"' is not an integer in [1, 100000]"
       else if (.not. (lo >= 0.0_wp .and. hi >= lo)) then
-         error = name//": need 0 <= LO <= HI ("//form//")"
+         error = name//": need 0 <= LO <= HI (expected "//form//")"
       else if (logscale .and. lo <= 0.0_wp) then
-         error = name//": LO must be > 0 with :log ("//form//")"
+         error = name//": LO must be > 0 with :log (expected "//form//")"
       end if
       if (allocated(error)) return
       allocate (values(n))
@@ -412,6 +413,48 @@ contains
       character, intent(in) :: c
       is_digit = c >= "0" .and. c <= "9"
    end function is_digit
+
+   !> A library message that starts with an argument's name ("c_star = 0.9 is outside ...")
+   !> with the name spelled as the option that gave it ("--c-star = 0.9 ..."); a message
+   !> that starts otherwise is returned unchanged.
+   pure function option_message(msg) result(text)
+      character(len=*), intent(in) :: msg
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: options(4) = [character(len=8) :: "--alpha", "--mu", &
+         "--a-star", "--c-star"]
+      character(len=:), allocatable :: head
+      integer :: k, i
+      k = scan(msg, " =:")                               ! the end of the leading name
+      if (k == 0) k = len(msg) + 1
+      head = "--"//msg(1:k - 1)
+      do i = 3, len(head)
+         if (head(i:i) == "_") head(i:i) = "-"
+      end do
+      do i = 1, size(options)
+         if (head == trim(options(i))) then
+            text = head//msg(k:)
+            return
+         end if
+      end do
+      do i = 1, size(si_names)
+         if (lower(head) == lower(trim(si_names(i)))) then
+            text = trim(si_names(i))//msg(k:)
+            return
+         end if
+      end do
+      text = msg
+   end function option_message
+
+   !> ASCII lower case.
+   pure function lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (text(i:i) >= "A" .and. text(i:i) <= "Z") low(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+   end function lower
 
    !> The valid range of a numeric option, as the library states it.
    pure function valid_range(name) result(range)

@@ -125,15 +125,19 @@ module wa_cli_output
 contains
 
    !> Open standard output (path = "") or the temporary file for `path`. On failure
-   !> the reason has been printed to standard error and `ok` is false.
-   subroutine open_sink(sink, path, ok)
+   !> the reason has been printed to standard error and `ok` is false; `no_directory`
+   !> tells a path whose directory does not exist (a usage error) from one that cannot
+   !> be written (a write error: /proc/version, a read-only directory, ...).
+   subroutine open_sink(sink, path, ok, no_directory)
       type(sink_type), intent(out) :: sink
       character(len=*), intent(in) :: path
       logical, intent(out) :: ok
+      logical, intent(out), optional :: no_directory
       intrinsic :: stat                                  ! GNU extension, as isatty in main
       integer :: values(13), status, k
       character(len=12) :: pid, attempt
 
+      if (present(no_directory)) no_directory = .false.
       sink%target = path
       sink%final = ""
       sink%temp = ""
@@ -165,6 +169,10 @@ contains
          if (c_associated(sink%file)) exit
       end do
       ok = c_associated(sink%file)
+      if (.not. ok .and. present(no_directory)) then
+         call stat(directory(sink%final)//".", values, status)
+         no_directory = status /= 0
+      end if
       if (ok) call remove_on_signal(sink%temp)
       if (ok .and. status == 0) &                        ! keep FILE's permission bits
          status = c_chmod(sink%temp//c_null_char, int(iand(values(3), int(o'7777')), c_int))

@@ -33,6 +33,7 @@ module wa_map
    public :: map_point, special_meaning, map_point_meet, map_point_turn, map_point_end, &
       map_point_fail
    public :: map_control_load, map_control_gap, map_control_both
+   public :: map_n_mu_max, map_n_alpha_max, map_cells_max
 
    !> What the map locates (adhesion_map's `control`): the load-control boundaries (which 1
    !> full contact, 2 pull-off), the gap-control ones (which 3 approach, 4 retraction:
@@ -52,6 +53,11 @@ module wa_map
    !> Bound on the curves of one map, and on those of load control (which 1, 2) and of gap
    !> control (3, 4) each: a tangle of one control does not crowd out the other
    integer, parameter :: max_boundaries = 128, max_per_control = 64
+   !> Bounds on the grid (checked before anything is allocated): at most map_n_mu_max mu
+   !> and map_n_alpha_max alpha values, at most map_cells_max cells n_mu*n_alpha (each
+   !> cell holds four mechanism codes)
+   integer, parameter :: map_n_mu_max = 100000, map_n_alpha_max = 100000, &
+      map_cells_max = 10000000
 
    !> One boundary curve: code = 100*which + 10*mech_below + mech_above (which: 1 full
    !> contact, 2 pull-off, 3 gap approach, 4 gap retraction; mech_*: mechanism_* codes
@@ -391,9 +397,15 @@ contains
       else if (.not. (mu_lo >= mu_min .and. mu_hi <= mu_max .and. mu_lo < mu_hi)) then
          call set_error(wa_invalid_argument, "adhesion_map: mu_lo < mu_hi required, both "// &
             "in [1e-100, 1e100]", status, errmsg)
-      else if (n_mu < 2 .or. n_mu > 100000) then
+      else if (n_mu < 2 .or. n_mu > map_n_mu_max) then
          call set_error(wa_invalid_argument, "adhesion_map: n_mu must be in [2, 100000]", &
             status, errmsg)
+      else if (size(alpha) > map_n_alpha_max) then
+         call set_error(wa_invalid_argument, "adhesion_map: alpha must hold at most 100000 "// &
+            "values", status, errmsg)
+      else if (real(n_mu, wp)*real(size(alpha), wp) > real(map_cells_max, wp)) then
+         call set_error(wa_invalid_argument, "adhesion_map: n_mu times the number of alpha "// &
+            "values must be at most 1e7 (the region grid's cells)", status, errmsg)
       else
          do j = 2, size(alpha)
             if (.not. alpha(j) > alpha(j - 1)) then

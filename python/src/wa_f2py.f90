@@ -32,6 +32,29 @@ subroutine fa_status_text(code, message)
    message = status_message(int(code))
 end subroutine fa_status_text
 
+!> The library's bounds on arguments, so that the Python layer checks the same ones
+!> before it allocates anything: the (alpha, mu) domain (wa_params) and the size of an
+!> adhesion map's grid (wa_map).
+subroutine fa_limits(alpha_min, alpha_max, mu_min, mu_max, map_n_mu_max, map_n_alpha_max, &
+      map_cells_max)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_params, only: p_alpha_min => alpha_min, p_alpha_max => alpha_max, &
+      p_mu_min => mu_min, p_mu_max => mu_max
+   use wa_map, only: p_n_mu_max => map_n_mu_max, p_n_alpha_max => map_n_alpha_max, &
+      p_cells_max => map_cells_max
+   implicit none
+   !> alpha in [alpha_min, alpha_max]; mu = 0 or in [mu_min, mu_max]
+   real(c_double), intent(out) :: alpha_min, alpha_max, mu_min, mu_max
+   !> adhesion_map: n_mu in [2, map_n_mu_max], at most map_n_alpha_max alpha values and
+   !> map_cells_max cells n_mu*n_alpha
+   integer(c_int), intent(out) :: map_n_mu_max, map_n_alpha_max, map_cells_max
+   alpha_min = p_alpha_min; alpha_max = p_alpha_max
+   mu_min = p_mu_min; mu_max = p_mu_max
+   map_n_mu_max = int(p_n_mu_max, c_int)
+   map_n_alpha_max = int(p_n_alpha_max, c_int)
+   map_cells_max = int(p_cells_max, c_int)
+end subroutine fa_limits
+
 !> Westergaard load P* = sin^2(pi a*) at n points   (3.1)
 subroutine fa_westergaard_load(n, a_star, p_star, nfail, ifail, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
@@ -942,3 +965,31 @@ subroutine fa_gap_critical_sweep(n, model, alpha, mu, values, row_status, ifail,
    status = int(stat, c_int)
 end subroutine fa_gap_critical_sweep
 
+
+!> The status and message of one point of wa_gapcritical::gap_critical_sweep, its own
+!> (a sweep's message is about its first failing row and counts the failures).
+subroutine fa_gap_critical_message(model, alpha, mu, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_gapcritical, only: gap_critical_sweep, gap_critical_count
+   implicit none
+   !> Model constant: 0 westergaard, 1 jkr, 2 dw, 3 md
+   integer(c_int), intent(in) :: model
+   !> Johnson's parameter and the transition parameter of the point
+   real(c_double), intent(in) :: alpha, mu
+   !> The point's status (wa_ok when it is computed)
+   integer(c_int), intent(out) :: status
+   !> Its message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   real(c_double) :: values(gap_critical_count, 1)
+   integer :: row_stat(1), stat
+   character(len=256) :: row_msg(1)
+
+   message = ""
+   call gap_critical_sweep(int(model), alpha, [mu], values, stat, message, row_stat, row_msg)
+   if (row_stat(1) /= 0) then                  ! else the sweep's own check failed
+      stat = row_stat(1)
+      if (len_trim(row_msg(1)) > 0) message = row_msg(1)
+   end if
+   status = int(stat, c_int)
+end subroutine fa_gap_critical_message

@@ -66,10 +66,16 @@ _BRANCH_CAPACITY = 4096
 # Events asked for in a first load_path() call (path_type holds at most 64).
 _PATH_CAPACITY = 64
 
-# The supported domain (WA_ALPHA_MIN ... WA_MU_MAX in include/wavyadhesion.h; a test
-# checks they agree). Used only to find the first bad point before any work: the
-# library's own check decides and words the message.
-_ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = 1e-12, 1e12, 1e-100, 1e100
+# The library's bounds, read from it (wa_params, wa_map): the supported domain
+# (WA_ALPHA_MIN ... WA_MU_MAX in include/wavyadhesion.h; a test checks they agree) and
+# the size of an adhesion map's grid. Used to refuse bad input before any work or
+# allocation; for alpha and mu the library's own check decides and words the message.
+_LIMITS = _f.fa_limits()
+_ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = (float(v) for v in _LIMITS[:4])
+_MAP_N_MU_MAX, _MAP_N_ALPHA_MAX, _MAP_CELLS_MAX = (int(v) for v in _LIMITS[4:])
+
+# The largest value of a C int (an integer the facade passes to Fortran)
+_C_INT_MAX = 2**31 - 1
 
 # Points per facade call in the vectorised functions. Between two calls Python runs and
 # raises KeyboardInterrupt on Ctrl-C (a Fortran call cannot be interrupted), so a chunk
@@ -78,6 +84,10 @@ _ALPHA_MIN, _ALPHA_MAX, _MU_MIN, _MU_MAX = 1e-12, 1e12, 1e-100, 1e100
 # smaller are one facade call, exactly as before chunking.
 _CHUNK_POINTS = 4096
 _CHUNK_SWEEP = 16
+# gap_law: each call walks the cycle again (~1-2 ms), then ~3 us per mean gap (MD), so
+# a chunk of 65536 gaps takes ~0.2 s and repeats the walk for < 1 % of the time; the
+# values at each gap and W* do not depend on the other gaps of the call.
+_CHUNK_GAPS = 65536
 
 # On an executor a chunk holds at least _parallel.chunk_seconds() of work (scheduling
 # overhead < 5 %), estimated with the cheapest measured cost of one critical_forces point
@@ -192,6 +202,33 @@ def _scalar(x, name: str) -> float:
     return float(arr)
 
 
+def _count(value, name: str, lo: int, hi: int) -> int:
+    """A count given as an integer in [lo, hi] (an integral float such as 60.0 too),
+    checked before anything is allocated. A bool, a non-integral or non-finite number and
+    anything but a real number are refused, naming `name` and its range."""
+    expected = f"an integer in [{lo}, {hi}]"
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise InvalidTypeError(f"{name} = {value!r}: must be {expected}", _INVALID_ARGUMENT)
+    if isinstance(value, (float, np.floating)) and not (np.isfinite(value)
+                                                         and float(value).is_integer()):
+        raise InvalidArgumentError(f"{name} = {value!r}: must be {expected}",
+                                   _INVALID_ARGUMENT)
+    if not lo <= int(value) <= hi:
+        raise InvalidArgumentError(f"{name} = {value!r} is outside [{lo}, {hi}]",
+                                   _INVALID_ARGUMENT)
+    return int(value)
+
+
+def _real_in(value, name: str, lo: float, hi: float) -> float:
+    """A real scalar in [lo, hi] (finite), or an error naming `name` and the range."""
+    x = _scalar(value, name)
+    if not lo <= x <= hi:
+        raise InvalidArgumentError(f"{name} = {value!r} is outside its valid range "
+                                   f"[{lo:g}, {hi:g}]", _INVALID_ARGUMENT)
+    return x
+
+
 def _model_code(model) -> int:
     if not isinstance(model, str):
         raise InvalidTypeError(
@@ -274,6 +311,11 @@ def _where(index: int, shape) -> str:
     if len(shape) == 0:
         return ""
     return f"at index {tuple(int(i) for i in np.unravel_index(index - 1, shape))}"
+
+
+def _index_text(i: int, shape) -> str:
+    """'2' or '1, 0' for the flat index i of an array of `shape` ('' for a scalar)."""
+    return ", ".join(str(int(k)) for k in np.unravel_index(i, shape)) if shape else ""
 
 
 class Equilibrium(NamedTuple):
@@ -1355,9 +1397,22 @@ def gap_law(model, alpha, mu, gbar) -> GapLaw:
     if flat.size == 0:
         raise InvalidArgumentError("gbar is empty: give at least one mean gap",
                                    _INVALID_ARGUMENT)
-    pa, pr, da, dr, w, wf, status, message = _f.fa_gap_law(code, alpha, mu, flat)
-    if status != _OK:
-        _raise(status, message)
+    with np.errstate(invalid="ignore"):
+        bad = np.flatnonzero(~(np.isfinite(flat) & (flat >= 0)))
+    if bad.size:                     # the library's word on it, with the index and value
+        i = int(bad[0])
+        *_, status, message = _f.fa_gap_law(code, alpha, mu, flat[i:i + 1])
+        if status != _OK:
+            _raise(status, message, f"gbar[{_index_text(i, shape)}] = {float(flat[i])!r}" if shape
+                   else f"gbar = {float(flat[i])!r}")
+    outputs = [np.empty(flat.size) for _ in range(4)]
+    for sl in _chunks(flat.size, _CHUNK_GAPS):       # Ctrl-C is seen between chunks
+        *values, w, wf, status, message = _f.fa_gap_law(code, alpha, mu, flat[sl])
+        if status != _OK:
+            _raise(status, message)
+        for out, v in zip(outputs, values):
+            out[sl] = v
+    pa, pr, da, dr = outputs
     return GapLaw(g.copy(), pa.reshape(shape), pr.reshape(shape), da.reshape(shape),
                   dr.reshape(shape), float(w), float(wf))
 

@@ -10,7 +10,8 @@ import numpy as np
 
 from . import _wa_f2py as _f
 from ._core import (InvalidArgumentError, _INVALID_ARGUMENT, _OK, _ALPHA_MAX, _ALPHA_MIN,
-                    _MU_MAX, _MU_MIN, _check_sweep_arguments, _flat, _float_array, _model_code, _raise, _shaped, _text, _where)
+                    _CHUNK_SWEEP, _MU_MAX, _MU_MIN, _check_sweep_arguments, _chunks, _flat,
+                    _float_array, _model_code, _raise, _shaped, _text, _where)
 
 #: The fields of GapCritical that hold values, in the order of the Fortran
 #: ``gap_critical_names`` and the C ``WA_GAP_CRITICAL_*`` indices.
@@ -48,11 +49,42 @@ class GapCritical(NamedTuple):
     messages: dict
 
 
+def _gap_chunk(code, alpha, mu_f, idx, values, status_out, messages, errors, shape):
+    """One facade call for the points `idx` (one alpha, at most _CHUNK_SWEEP of them);
+    a failed point keeps NaN and gets its status and its own message (errors="raise":
+    the first one raises)."""
+    vals, rows, ifail, status, message = _f.fa_gap_critical_sweep(
+        code, alpha, np.ascontiguousarray(mu_f[idx]))
+    if status == _INVALID_ARGUMENT and (rows == _INVALID_ARGUMENT).all():
+        # this alpha or one of its mu was refused: nothing computed for its points
+        where = int(idx[ifail - 1]) if ifail > 0 else int(idx[0])
+        if errors == "raise":
+            _raise(status, message, _where(where + 1, shape))
+        status_out[idx] = status
+        for i in idx:
+            messages[int(i)] = _text(message)
+        return
+    values[:, idx] = vals
+    status_out[idx] = rows
+    for j in np.flatnonzero(rows != _OK):
+        i = int(idx[j])
+        # the sweep's message is about its first failing row: ask this row's own (as
+        # critical_forces does; failures are rare), so that it does not depend on chunks
+        row_status, text = _f.fa_gap_critical_message(code, alpha, float(mu_f[i]))
+        text = _text(text) or _text(_f.fa_status_text(int(rows[j])))
+        text = f"alpha = {alpha!r}, mu = {float(mu_f[i])!r}: {text}"
+        if errors == "raise":
+            _raise(int(rows[j]), text, _where(i + 1, shape))
+        messages[i] = text
+
+
 def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
     """Critical values under gap (mean-gap) control, vectorised over mu and broadcast
     with alpha: where the approach first feels the surface and jumps in (a jump under gap
     control keeps gbar*), where contact is made, the most tensile load on the retraction
-    and where contact and interaction are lost.
+    and where contact and interaction are lost. The Fortran ``gap_critical_sweep`` (GIL
+    released) runs in calls of at most 16 mu that share an alpha; Ctrl-C
+    (KeyboardInterrupt) takes effect between two calls (within ~0.3 s for MD).
 
     Parameters
     ----------
@@ -113,24 +145,9 @@ def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
     inverse = inverse.reshape(-1)
     good = np.flatnonzero(~bad)
     for k, value in enumerate(uniq):
-        idx = good[inverse == k]
-        vals, rows, ifail, status, message = _f.fa_gap_critical_sweep(
-            code, float(value), np.ascontiguousarray(mu_f[idx]))
-        if status == _INVALID_ARGUMENT and (rows == _INVALID_ARGUMENT).all():
-            # this alpha or one of its mu was refused: nothing computed for its points
-            where = int(idx[ifail - 1]) if ifail > 0 else int(idx[0])
-            if errors == "raise":
-                _raise(status, message, _where(where + 1, shape))
-            status_out[idx] = status
-            for i in idx:
-                messages[int(i)] = _text(message)
-            continue
-        values[:, idx] = vals
-        status_out[idx] = rows
-        for j in np.flatnonzero(rows != _OK):
-            i = int(idx[j])
-            if errors == "raise":
-                _raise(int(rows[j]), message, _where(i + 1, shape))
-            messages[i] = _text(message)
+        group = good[inverse == k]
+        for sl in _chunks(group.size, _CHUNK_SWEEP):    # Ctrl-C is seen between chunks
+            _gap_chunk(code, float(value), mu_f, group[sl], values, status_out, messages,
+                       errors, shape)
     fields = [_shaped(values[k], shape) for k in range(len(GAP_CRITICAL_FIELDS))]
     return GapCritical(*fields, _shaped(status_out, shape), messages)

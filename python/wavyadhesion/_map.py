@@ -2,16 +2,17 @@
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Optional
 
 import numpy as np
 
 from . import _wa_f2py as _f
-from ._core import (InvalidArgumentError, _model_code, _raise, critical_forces, _OK,
-                    _text)
-from ._parallel import run_chunks
+from ._core import (MODELS, InvalidArgumentError, InvalidTypeError, _ALPHA_MAX, _ALPHA_MIN,
+                    _C_INT_MAX, _INVALID_ARGUMENT, _MAP_CELLS_MAX, _MAP_N_ALPHA_MAX,
+                    _MAP_N_MU_MAX, _MU_MAX, _MU_MIN, _OK, _count, _float_array, _model_code,
+                    _raise, _real_in, critical_forces)
+from ._parallel import Background, call_interruptibly, run_chunks
 
 #: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
 _NAMES = ("gradual", "jump case 1", "jump case 2", "snap at P=0")
@@ -127,16 +128,57 @@ class AdhesionMap:
     gr_region: Optional[np.ndarray] = None
 
 
+#: The accepted forms of alpha_range and mu_range, for messages
+_ALPHA_FORM = ("(lo, hi, n) with 1e-12 <= lo < hi <= 1e12 and n an integer in [2, 100000], "
+               "or an array of strictly increasing alpha values in [1e-12, 1e12]")
+_MU_FORM = ("(lo, hi, n) with 1e-100 <= lo < hi <= 1e100 and n an integer in "
+            "[2, 100000]")
+
+
+def _range3(spec, name, lo_min, hi_max, n_max, form):
+    """(lo, hi, n) validated: reals lo < hi in [lo_min, hi_max], an integer n in
+    [2, n_max]; every error names `name`'s part and the expected form."""
+    if not (isinstance(spec, (tuple, list)) and len(spec) == 3):
+        raise InvalidArgumentError(f"{name} = {spec!r}: expected {form}", _INVALID_ARGUMENT)
+    lo = _real_in(spec[0], f"{name} lo", lo_min, hi_max)
+    hi = _real_in(spec[1], f"{name} hi", lo_min, hi_max)
+    n = _count(spec[2], f"{name} n", 2, n_max)
+    if not lo < hi:
+        raise InvalidArgumentError(f"{name} = {spec!r}: need lo < hi (expected {form})",
+                                   _INVALID_ARGUMENT)
+    return lo, hi, n
+
+
 def _grid(spec, name):
-    """(lo, hi, n) or an array of values."""
+    """The alpha values: (lo, hi, n) -> n log-spaced values, else an array of strictly
+    increasing values; checked against the library's bounds before anything is
+    allocated (the errors name `name` and the expected form)."""
+    if isinstance(spec, (str, bytes)) or spec is None:
+        raise InvalidTypeError(f"{name} = {spec!r}: expected {_ALPHA_FORM}",
+                               _INVALID_ARGUMENT)
     if isinstance(spec, tuple) and len(spec) == 3:
-        lo, hi, n = spec
-        if not (float(lo) > 0 and float(hi) > float(lo) and int(n) >= 2):
-            raise InvalidArgumentError(f"{name} = {spec!r}: need 0 < lo < hi and n >= 2", 1)
-        return np.geomspace(float(lo), float(hi), int(n))
-    values = np.asarray(spec, dtype=float).reshape(-1)
-    if values.size < 1:
-        raise InvalidArgumentError(f"{name} is empty", 1)
+        lo, hi, n = _range3(spec, name, _ALPHA_MIN, _ALPHA_MAX, _MAP_N_ALPHA_MAX,
+                            _ALPHA_FORM)
+        return np.geomspace(lo, hi, n)
+    if np.ndim(spec) > 1:
+        raise InvalidArgumentError(f"{name}: expected {_ALPHA_FORM}; got an array of shape "
+                                   f"{np.shape(spec)}", _INVALID_ARGUMENT)
+    if not 1 <= np.size(spec) <= _MAP_N_ALPHA_MAX:
+        raise InvalidArgumentError(f"{name} holds {np.size(spec)} values: expected 1 to "
+                                   f"{_MAP_N_ALPHA_MAX} ({_ALPHA_FORM})", _INVALID_ARGUMENT)
+    values = _float_array(spec, name).reshape(-1)
+    with np.errstate(invalid="ignore"):
+        outside = np.flatnonzero(~((values >= _ALPHA_MIN) & (values <= _ALPHA_MAX)))
+        falling = np.flatnonzero(~(values[1:] > values[:-1])) + 1
+    if outside.size:
+        i = int(outside[0])
+        raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is outside its valid "
+                                   f"range [{_ALPHA_MIN:g}, {_ALPHA_MAX:g}]", _INVALID_ARGUMENT)
+    if falling.size:
+        i = int(falling[0])
+        raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is not greater than "
+                                   f"{name}[{i - 1}] = {float(values[i - 1])!r}: the values "
+                                   "must be strictly increasing", _INVALID_ARGUMENT)
     return values
 
 
@@ -211,23 +253,31 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     ----------
     model : {"dw", "md"}
     alpha_range : (lo, hi, n) or array_like
-        Log-spaced alpha (default 0.01..10, 200 values) or increasing values.
+        Log-spaced alpha (default 0.01..10, 200 values; 1e-12 <= lo < hi <= 1e12, n an
+        integer in [2, 100000]) or strictly increasing values in [1e-12, 1e12] (1 to
+        100000 of them).
     mu_range : (lo, hi, n)
         The mu range and the number of log-spaced mu of the region grid (default 1e-3..1e3,
-        60); the boundaries are located anywhere in [lo, hi] to 2e-9 relative.
+        60; 1e-100 <= lo < hi <= 1e100, n an integer in [2, 100000]); the boundaries are
+        located anywhere in [lo, hi] to 2e-9 relative. The grid holds at most 1e7 cells
+        (n times the number of alpha values).
     forces : bool
         Also compute P_fc, P_pf and the mechanisms in every cell, the model-choice masks,
         and the boundaries crossed in alpha (codes from 1000, located by bisection in
         alpha at the grid mu where the mechanism changes between two alpha columns).
     scan_every : int
-        The coarse mu scan that discovers boundaries runs at every scan_every-th alpha.
+        The coarse mu scan that discovers boundaries runs at every scan_every-th alpha
+        (an integer >= 1).
     executor : concurrent.futures.Executor, optional
         Runs the force grid (one chunk per alpha) and the bisections in alpha on it; the
         boundaries in mu are continued in one Fortran call (serial), in a thread of its
         own while the executor works on the force grid. Results equal the serial ones.
+        The Fortran call runs in a helper thread in any case, so that Ctrl-C raises
+        KeyboardInterrupt within 0.1 s (the call itself runs on to its end in the
+        background, its result dropped).
     alpha_tol : float
         Relative accuracy in alpha of the boundaries crossed in alpha (``forces=True``;
-        default 1e-9; a figure needs far less, e.g. 1e-5).
+        default 1e-9, in [1e-15, 0.1]; a figure needs far less, e.g. 1e-5).
     control : {"load", "gap", "both"}
         Which boundaries: load control (codes 1xx, 2xx; default), gap control (3xx
         approach, 4xx retraction: doc/theory.md, "Adhesion map") or both. Gap control
@@ -240,38 +290,48 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     Raises
     ------
     InvalidArgumentError
-        A model other than dw/md, a bad range (decreasing alpha, mu_lo >= mu_hi, ...), a
-        control other than load/gap/both.
+        A model other than dw/md, a bad range or count (decreasing alpha, mu lo >= hi, a
+        count that is not an integer in its range, NaN, inf, a grid of more than 1e7
+        cells, ...: checked before anything is allocated, the message names the
+        argument and its valid range), a control other than load/gap/both.
+    InvalidTypeError
+        A range, count or flag of the wrong type (a string, None, a bool as a count).
     """
     code = _model_code(model)
-    if control not in CONTROLS:
+    if code not in (MODELS["dw"], MODELS["md"]):
+        raise InvalidArgumentError(f"model = {model!r}: the adhesion map is for 'dw' or 'md' "
+                                   "(westergaard and jkr have one mechanism each)",
+                                   _INVALID_ARGUMENT)
+    if not (isinstance(control, str) and control in CONTROLS):
         raise InvalidArgumentError(f"control = {control!r}: must be 'load', 'gap' or 'both'",
-                                   1)
+                                   _INVALID_ARGUMENT)
+    if not isinstance(forces, (bool, np.bool_)):
+        raise InvalidTypeError(f"forces = {forces!r}: must be True or False",
+                               _INVALID_ARGUMENT)
+    every = _count(scan_every, "scan_every", 1, _C_INT_MAX)
+    alpha_tol = _real_in(alpha_tol, "alpha_tol", 1e-15, 0.1)
+    mu_lo, mu_hi, n_mu = _range3(mu_range, "mu_range", _MU_MIN, _MU_MAX, _MAP_N_MU_MAX,
+                                 _MU_FORM)
     alpha = _grid(alpha_range, "alpha_range")
-    if not (isinstance(mu_range, tuple) and len(mu_range) == 3):
-        raise InvalidArgumentError("mu_range must be (lo, hi, n)", 1)
-    mu_lo, mu_hi, n_mu = float(mu_range[0]), float(mu_range[1]), int(mu_range[2])
-    if not 1e-15 <= float(alpha_tol) <= 0.1:
-        raise InvalidArgumentError(f"alpha_tol = {alpha_tol!r}: must be in [1e-15, 0.1]", 1)
+    if n_mu * alpha.size > _MAP_CELLS_MAX:
+        raise InvalidArgumentError(
+            f"mu_range n times the number of alpha values = {n_mu} x {alpha.size} = "
+            f"{n_mu * alpha.size}: the grid may hold at most {_MAP_CELLS_MAX} cells",
+            _INVALID_ARGUMENT)
     capacity = 64 * (alpha.size + 64)
-    args = (max(n_mu, 2), capacity, code, alpha, mu_lo, mu_hi, int(scan_every),
-            CONTROLS[control])
+    args = (n_mu, capacity, code, alpha, mu_lo, mu_hi, every, CONTROLS[control])
     pending = None
-    if forces and executor is not None and n_mu >= 2 and 0 < mu_lo < mu_hi:
-        # the force grid on the executor while this thread's helper continues the
-        # boundaries (the facade releases the GIL); the grid is Fortran's (checked below)
+    if forces and executor is not None:
+        # the force grid on the executor while a helper thread continues the boundaries
+        # (the facade releases the GIL); the grid is Fortran's (checked below)
         mu_guess = np.exp(np.log(mu_lo) + (np.log(mu_hi) - np.log(mu_lo))
                           * np.arange(n_mu) / (n_mu - 1))
-        pool = ThreadPoolExecutor(1)
-        future = pool.submit(_f.fa_adhesion_map, *args)
-        try:
-            pending = (mu_guess, run_chunks(
-                _forces_chunk, [(str(model), float(a), mu_guess) for a in alpha], executor))
-        finally:
-            out = future.result()
-            pool.shutdown()
+        call = Background(_f.fa_adhesion_map, *args)
+        pending = (mu_guess, run_chunks(
+            _forces_chunk, [(str(model), float(a), mu_guess) for a in alpha], executor))
+        out = call.result()
     else:
-        out = _f.fa_adhesion_map(*args)
+        out = call_interruptibly(_f.fa_adhesion_map, *args)   # Ctrl-C within 0.1 s
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, ga, gr, n_paths, status,
      message, sp_kind, sp_codes, sp_point, n_special) = out
     if status != _OK:

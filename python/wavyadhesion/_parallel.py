@@ -24,8 +24,14 @@ targets 10 ms, 50 ms, 200 ms (dask) and 50 ms (MPI and any other executor).
 from __future__ import annotations
 
 import math
+import threading
 
-__all__ = ["run_chunks", "iter_chunks", "chunk_seconds", "points_per_chunk"]
+__all__ = ["run_chunks", "iter_chunks", "chunk_seconds", "points_per_chunk", "Background",
+           "call_interruptibly"]
+
+# How often (s) a thread waiting for a Background call wakes up to let Python handle a
+# signal (Ctrl-C); POSIX interrupts the wait itself, this bounds it elsewhere.
+_WAIT_STEP = 0.1
 
 # Work (seconds) per chunk by kind of executor; see the module docstring.
 _SECONDS_THREADS = 0.01
@@ -96,3 +102,43 @@ def points_per_chunk(executor, seconds_per_point: float, minimum: int = 1) -> in
     """Points per chunk: :func:`chunk_seconds` over the cost of one point, at least
     `minimum`."""
     return max(minimum, math.ceil(chunk_seconds(executor) / seconds_per_point))
+
+
+class Background:
+    """``func(*args)`` started in a helper thread (a daemon) at once; :meth:`result`
+    waits for it in steps of 0.1 s.
+
+    For one long facade call that cannot be cut into chunks (the adhesion map): Python
+    handles Ctrl-C only between bytecodes of the main thread, never during a foreign call,
+    but the facade releases the GIL, so the main thread waits here instead and
+    ``KeyboardInterrupt`` is raised within 0.1 s. The Fortran call itself cannot be
+    stopped: it runs on in the helper thread to its end (its result is dropped; the
+    library has no global state, so nothing is left inconsistent), and a daemon thread
+    does not keep the interpreter from exiting.
+    """
+
+    def __init__(self, func, *args):
+        self._outcome = {}
+        self._thread = threading.Thread(target=self._run, args=(func, args), daemon=True,
+                                        name="wavyadhesion-call")
+        self._thread.start()
+
+    def _run(self, func, args):
+        try:
+            self._outcome["value"] = func(*args)
+        except BaseException as exc:         # re-raised in the waiting thread
+            self._outcome["error"] = exc
+
+    def result(self):
+        """The call's result (or its exception), once it has finished."""
+        while self._thread.is_alive():
+            self._thread.join(_WAIT_STEP)    # Ctrl-C raises KeyboardInterrupt here
+        if "error" in self._outcome:
+            raise self._outcome["error"]
+        return self._outcome["value"]
+
+
+def call_interruptibly(func, *args):
+    """``func(*args)``, with Ctrl-C raising ``KeyboardInterrupt`` within 0.1 s even while
+    it runs one long foreign call (see :class:`Background`)."""
+    return Background(func, *args).result()

@@ -168,6 +168,49 @@ def test_write_error_on_output_file_exits_1(cli):
     assert "/dev/full" in res.stderr and "No space left" in res.stderr
 
 
+@pytest.mark.parametrize("target", ["/proc/version", "/proc/no-such-file"])
+def test_output_that_cannot_be_created_exits_1(cli, target):
+    # issue 8: a write error, not a usage error (user guide: write errors exit 1)
+    if not os.path.isdir("/proc/self"):
+        pytest.skip("no /proc here")
+    res = run(cli, "point", "--a-star", "0.2", "--output", target, check=False)
+    assert res.returncode == 1, res.stderr
+    assert target in res.stderr and "--output" in res.stderr
+    assert "Try 'wavyadhesion --help'" not in res.stderr and res.stdout == ""
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["critical", "--mu-range", "1:x:3"], "--mu-range HI: 'x' is not a number (expected LO:HI:N"),
+    (["critical", "--mu-range", "1:2"], "is not LO:HI:N[:log] (expected LO:HI:N"),
+    (["critical", "--mu-range", "2:1:3"], "need 0 <= LO <= HI (expected LO:HI:N"),
+    (["map", "--alpha-range", "0:1:3:log"], "LO must be > 0 with :log (expected LO:HI:N"),
+    (["gaplaw", "--gbar-range", "0:1:3:lin"], "is not 'log' (expected LO:HI:N"),
+])
+def test_range_messages_say_expected_once(cli, args, needle):
+    # issue 8: "(expected expected LO:HI:N...)"
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2 and needle in res.stderr, res.stderr
+    assert "expected expected" not in res.stderr
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["critical", "--Estar", "1e6", "--period", "1e-3", "--amplitude", "1e-5",
+      "--work-of-adhesion", "-1", "--peak-stress", "1e5"], "--work-of-adhesion = "),
+    (["critical", "--Estar", "1e6", "--period", "1e-3", "--amplitude", "1e-5",
+      "--work-of-adhesion", "0.05", "--peak-stress", "-1"], "--peak-stress = "),
+    (["critical", "--E1", "1e6", "--nu1", "0.3", "--E2", "1e6", "--nu2", "0.6", "--period",
+      "1e-3", "--amplitude", "1e-5", "--work-of-adhesion", "0.05", "--peak-stress", "1e5"],
+     "--nu2 = "),
+    (["point", "--alpha", "1e13", "--a-star", "0.2"], "--alpha = "),
+    (["critical", "--mu", "1e101"], "--mu = "),
+])
+def test_library_messages_name_the_option(cli, args, needle):
+    # issue 8: the library's argument names spelled as the options (--c-star, not --c_star)
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2 and needle in res.stderr, res.stderr
+    assert "_" not in res.stderr.split("=")[0], res.stderr
+
+
 def test_output_to_a_device_is_written_directly(cli):
     run(cli, "point", "--a-star", "0.2", "--output", "/dev/null")
 
@@ -536,18 +579,19 @@ def test_profile_options(cli):
     (["profile"], 2, "--a-star"),
     (["profile", "--a-star", "0.1,0.2"], 2, "one value"),
     (["profile", "--a-star", "0.7"], 2, "[0, 1/2]"),
-    (["profile", "--a-star", "0.2", "--c-star", "0.9"], 2, "c_star"),
+    (["profile", "--a-star", "0.2", "--c-star", "0.9"], 2, "--c-star = "),
     (["profile", "--a-star", "0.2", "--n", "1"], 2, "--n"),
     (["profile", "--a-star", "0.2", "--n", "x"], 2, "--n"),
     (["point", "--a-star", "0.2", "--n", "5"], 2, "--n are only for the profile"),
     (["branch", "--c-star", "0.2"], 2, "--c-star"),
-    (["profile", "--model", "md", "--a-star", "0"], 2, "c_star"),
+    (["profile", "--model", "md", "--a-star", "0"], 2, "--c-star: needed"),
     (["profile", "--a-star", "0.2", "--c-star", "0.45"], 1, "nearest"),
     (["profile", "--model", "jkr", "--a-star", "0.5"], 1, "jkr"),
 ])
 def test_profile_errors(cli, args, code, needle):
     res = run(cli, *args, check=False)
     assert res.returncode == code, res.stderr
+    assert needle in res.stderr and "--c_star" not in res.stderr, res.stderr
 
 
 def test_path_control_gap_md_events_and_energy(cli):

@@ -4,6 +4,7 @@ module test_map
    use harness, only: error_type, unittest_type, new_unittest, check
    use wavyadhesion
    use wa_kinds, only: wp
+   use wa_map, only: map_n_mu_max, map_n_alpha_max, map_cells_max
    implicit none
    private
 
@@ -215,7 +216,31 @@ contains
          control=4)
       call check(error, status == wa_invalid_argument .and. index(msg, "control") > 0, &
          "control = 4 refused")
+      if (allocated(error)) return
+      ! the grid's bounds, checked before it is allocated (issue 3)
+      call adhesion_map(model_dw, [0.3_wp], 1.0e-3_wp, 1.0e3_wp, map_n_mu_max + 1, map, &
+         status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "n_mu") > 0, &
+         "n_mu = 100001 refused")
+      if (allocated(error)) return
+      call adhesion_map(model_dw, grid(map_n_alpha_max + 1), 1.0e-3_wp, 1.0e3_wp, 2, map, &
+         status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "at most 100000") > 0, &
+         "100001 alpha refused")
+      if (allocated(error)) return
+      call adhesion_map(model_dw, grid(map_n_alpha_max), 1.0e-3_wp, 1.0e3_wp, &
+         map_cells_max/map_n_alpha_max + 1, map, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "1e7") > 0, &
+         "more than 1e7 cells refused")
    end subroutine test_invalid
+
+   !> n increasing alpha values from 0.01.
+   pure function grid(n) result(alpha)
+      integer, intent(in) :: n
+      real(wp) :: alpha(n)
+      integer :: i
+      alpha = [(0.01_wp*(1.0_wp + 1.0e-4_wp*i), i = 1, n)]
+   end function grid
 
    !> Gap control (codes 3xx, 4xx): DW, 20 alpha over [0.01, 10], every boundary point on
    !> the grid rebisected by gap_mechanism_change from +-1e-6 agrees to 1e-8 relative
