@@ -1,10 +1,11 @@
-!> Elementary functions Fortran lacks, written to keep full relative accuracy.
+!> Elementary functions Fortran lacks, written to keep full relative accuracy, and the
+!> small array helpers (an index sort) the library shares.
 module wa_math
    use wa_kinds, only: wp, pi
    implicit none
    private
 
-   public :: log1p, sincos_pi
+   public :: log1p, sincos_pi, sort_index
 
 contains
 
@@ -38,5 +39,23 @@ contains
          c = sin(angle)
       end if
    end subroutine sincos_pi
+
+   !> The permutation that sorts v into increasing order (insertion sort: stable, for the
+   !> short arrays it is used on).
+   pure function sort_index(v) result(idx)
+      real(wp), intent(in) :: v(:)
+      integer :: idx(size(v)), i, j, tmp
+      idx = [(i, i = 1, size(v))]
+      do i = 2, size(v)
+         j = i
+         do while (j > 1)
+            if (v(idx(j - 1)) <= v(idx(j))) exit
+            tmp = idx(j)
+            idx(j) = idx(j - 1)
+            idx(j - 1) = tmp
+            j = j - 1
+         end do
+      end do
+   end function sort_index
 
 end module wa_math

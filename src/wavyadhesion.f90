@@ -26,15 +26,16 @@ module wavyadhesion
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
-   use wa_map, only: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
+   use wa_map_types, only: map_type, map_boundary, boundary_code, boundary_meaning, &
       map_end_grid, map_end_inside, map_end_mu_range, map_end_failed, map_point, &
       special_meaning, map_point_meet, map_point_turn, map_point_end, map_point_fail
+   use wa_map, only: adhesion_map
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost, load_jump_energies
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
       gap_critical_values, gap_critical_count, gap_critical_names
-   use wa_map, only: map_control_load, map_control_gap, map_control_both
+   use wa_map_types, only: map_control_load, map_control_gap, map_control_both
    use wa_gapmech, only: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
    implicit none
    private
