@@ -23,21 +23,27 @@ module wa_branch
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_separation, only: state_mean_gap, md_no_contact_family, dw_state_gbar, md_state_gbar
-   use wa_branch_types, only: branch_type, trace_options, append, reserve, event_none, &
-      event_fold, event_switch, event_jump_start, event_jump_end, &
-      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end, &
-      event_a_turn
+   use wa_branch_types, only: branch_type, trace_options, append, reserve
    use wa_branch_step, only: curve_point, corrector, orient, locate_zero, crosses_case2, &
       case1_extremum, switch_abscissa, case2_point, case2_slope, corner_extremum
    implicit none
    private
 
    public :: trace_branch
-   !> trace_branch's argument types and the event codes of its points, for its callers
+   !> trace_branch's argument types, for its callers
    public :: branch_type, trace_options
    public :: event_none, event_fold, event_switch, event_jump_start, event_jump_end, &
       event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end, &
       event_a_turn
+
+   !> Event codes (the CLI's and C header's): 0 none, 1 fold of P*, 2 zone-case switch,
+   !> 3 jump start, 4 jump end, 5 full contact reached, 6 full contact left, 7 pull-off,
+   !> 8 branch end (first and last point of each piece), 9 a*-turn (two case-1 roots
+   !> merge: a* turns back, P* does not; not a fold, stability does not change there).
+   integer, parameter :: event_none = 0, event_fold = 1, event_switch = 2, &
+      event_jump_start = 3, event_jump_end = 4, event_full_contact_reached = 5, &
+      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8, &
+      event_a_turn = 9
 
    !> What fold_before_switch found: a fold (pushed), or a turn of P* within round-off
    !> of the switch (the corner is the extremum)

@@ -1,6 +1,7 @@
 !> The traced branch as data: its points (a*, c*, P*, gbar*, zone case, stability, event,
-!> extremum) in the order of the curve, the event codes, the continuation's options, and
-!> the growth of the point arrays (append, reserve). wa_branch fills it (trace_branch).
+!> extremum) in the order of the curve, the continuation's options, and the growth of the
+!> point arrays (append, reserve). wa_branch fills it (trace_branch) and defines the
+!> event codes.
 module wa_branch_types
    use wa_kinds, only: wp
    use wa_state, only: state_type
@@ -8,18 +9,6 @@ module wa_branch_types
    private
 
    public :: branch_type, trace_options, append, reserve
-   public :: event_none, event_fold, event_switch, event_jump_start, event_jump_end, &
-      event_full_contact_reached, event_full_contact_left, event_pull_off, event_branch_end, &
-      event_a_turn
-
-   !> Event codes (the CLI's and C header's): 0 none, 1 fold of P*, 2 zone-case switch,
-   !> 3 jump start, 4 jump end, 5 full contact reached, 6 full contact left, 7 pull-off,
-   !> 8 branch end (first and last point of each piece), 9 a*-turn (two case-1 roots
-   !> merge: a* turns back, P* does not; not a fold, stability does not change there).
-   integer, parameter :: event_none = 0, event_fold = 1, event_switch = 2, &
-      event_jump_start = 3, event_jump_end = 4, event_full_contact_reached = 5, &
-      event_full_contact_left = 6, event_pull_off = 7, event_branch_end = 8, &
-      event_a_turn = 9
 
    !> A traced branch: points in the order of the curve (not necessarily of a*).
    type :: branch_type

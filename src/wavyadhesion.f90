@@ -19,10 +19,10 @@ module wavyadhesion
       md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
       md_no_contact_family
-   use wa_branch_types, only: branch_type, trace_options, event_none, event_fold, &
-      event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
+   use wa_branch_types, only: branch_type, trace_options
+   use wa_branch, only: trace_branch, event_none, event_fold, event_switch, &
+      event_jump_start, event_jump_end, event_full_contact_reached, &
       event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
-   use wa_branch, only: trace_branch
    use wa_loadpath, only: path_from_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
