@@ -16,6 +16,7 @@ module wa_loadpath
    use wa_curve, only: curve_equilibrium
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_text, only: real_text, int_text
+   use wa_validate, only: optval
    use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
       bisection_tell, bisection_result
    implicit none
@@ -111,8 +112,7 @@ contains
       logical, intent(in), optional :: mechanisms_only
       type(polyline) :: loop
       logical :: solve
-      solve = .true.
-      if (present(mechanisms_only)) solve = .not. mechanisms_only
+      solve = .not. optval(mechanisms_only, .false.)
       call loading(model, params, branch, path, loop, status, errmsg, solve)
       if (status /= wa_ok) return
       call unloading(model, params, branch, path, loop, status, errmsg, solve)

@@ -1,10 +1,11 @@
-!> Elementary functions Fortran lacks, written to keep full relative accuracy.
+!> Elementary functions Fortran lacks, written to keep full relative accuracy, and the
+!> small array helpers (an index sort) the library shares.
 module wa_math
    use wa_kinds, only: wp, pi
    implicit none
    private
 
-   public :: log1p, sincos_pi, sin_pi_sum, sqrt_sin_pi, sqrt_sin_pi_sum, edge_asinh
+   public :: log1p, sincos_pi, sin_pi_sum, sqrt_sin_pi, sqrt_sin_pi_sum, edge_asinh, sort_index
 
    !> Below this x, sin(pi x) = pi x to rounding ((pi x)^2/6 < 1e-299)
    real(wp), parameter :: small_angle = 1.0e-150_wp
@@ -95,5 +96,23 @@ contains
          y = log(2.0_wp) + log(t1) + log(t2)
       end if
    end function edge_asinh
+
+   !> The permutation that sorts v into increasing order (insertion sort: stable, for the
+   !> short arrays it is used on).
+   pure function sort_index(v) result(idx)
+      real(wp), intent(in) :: v(:)
+      integer :: idx(size(v)), i, j, tmp
+      idx = [(i, i = 1, size(v))]
+      do i = 2, size(v)
+         j = i
+         do while (j > 1)
+            if (v(idx(j - 1)) <= v(idx(j))) exit
+            tmp = idx(j)
+            idx(j) = idx(j - 1)
+            idx(j - 1) = tmp
+            j = j - 1
+         end do
+      end do
+   end function sort_index
 
 end module wa_math

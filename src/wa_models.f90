@@ -9,6 +9,7 @@ module wa_models
    use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_capacity_too_small, &
       wa_numerical_error, set_error
    use wa_validate, only: check_range
+   use wa_text, only: real_text, int_text
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_full_contact, model_westergaard, &
       model_jkr, model_dw, model_md
@@ -40,14 +41,12 @@ contains
       integer, intent(out) :: status
       !> Receives the reason on failure
       character(len=*), intent(inout), optional :: errmsg
-      character(len=12) :: text
 
       select case (model)
       case (model_westergaard, model_jkr, model_dw, model_md)
          status = wa_ok
       case default
-         write (text, '(i0)') model
-         call set_error(wa_invalid_argument, "model = "//trim(text)// &
+         call set_error(wa_invalid_argument, "model = "//int_text(model)// &
             " is not one of 0 (westergaard), 1 (jkr), 2 (dw), 3 (md)", status, errmsg)
       end select
    end subroutine check_model
@@ -145,7 +144,6 @@ contains
       !> Interaction-zone half-width of the state, in [0, 1/2] (default: the principal state)
       real(wp), intent(in), optional :: c_star
       type(state_type) :: states(max_model_roots)
-      character(len=32) :: t_c, t_a, t_near
       integer :: n, k, best
 
       call check_model(model, status, errmsg)
@@ -198,13 +196,9 @@ contains
          return
       end if
       if (abs(states(best)%c_star - c_star) > state_c_tolerance) then
-         write (t_c, '(es24.16e3)') c_star
-         write (t_a, '(es24.16e3)') a_star
-         write (t_near, '(es24.16e3)') states(best)%c_star
-         write (t_a(25:32), '(i0)') n
-         call set_error(wa_no_solution, "c_star = "//trim(adjustl(t_c))//": no state at "// &
-            "a_star = "//trim(adjustl(t_a(1:24)))//" has c* within 1e-6 (of its "// &
-            trim(t_a(25:32))//" states the nearest has c* = "//trim(adjustl(t_near))//")", &
+         call set_error(wa_no_solution, "c_star = "//real_text(c_star)//": no state at "// &
+            "a_star = "//real_text(a_star)//" has c* within 1e-6 (of its "// &
+            int_text(n)//" states the nearest has c* = "//real_text(states(best)%c_star)//")", &
             status, errmsg)
          return
       end if
@@ -236,7 +230,6 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       !> Interaction-zone half-width of the state, in [0, 1/2] (default: the principal state)
       real(wp), intent(in), optional :: c_star
-      character(len=12) :: text
       integer :: i
 
       traction = 0.0_wp
@@ -251,9 +244,8 @@ contains
             if (model == model_jkr .and. traction(i) < 0.0_wp .and. &
                   abs(x_star(i) - anint(x_star(i))) == state%a_star) cycle
          end if
-         write (text, '(i0)') i
          call set_error(wa_numerical_error, "profile: traction or gap not finite (or gap "// &
-            "< 0) at point "//trim(text)//" (an underflow at this a_star)", status, errmsg)
+            "< 0) at point "//int_text(i)//" (an underflow at this a_star)", status, errmsg)
          traction = 0.0_wp
          gap = 0.0_wp
          return

@@ -7,7 +7,13 @@ module wa_validate
    implicit none
    private
 
-   public :: check_range
+   public :: check_range, optval
+
+   !> The value of an optional argument, or `default` where it is absent
+   !> (stdlib's optval): optval(tol_in, 1.0e-9_wp), optval(flag, .false.).
+   interface optval
+      module procedure optval_logical, optval_integer, optval_real
+   end interface optval
 
 contains
 
@@ -27,12 +33,12 @@ contains
 
       bad = ieee_is_nan(x)
       if (.not. bad) then
-         if (optval(lo_open)) then
+         if (optval(lo_open, .false.)) then
             bad = .not. (x > lo)
          else
             bad = .not. (x >= lo)
          end if
-         if (optval(hi_open)) then
+         if (optval(hi_open, .false.)) then
             bad = bad .or. .not. (x < hi)
          else
             bad = bad .or. .not. (x <= hi)
@@ -52,10 +58,25 @@ contains
       end if
    end subroutine check_range
 
-   pure logical function optval(flag)
-      logical, intent(in), optional :: flag
-      optval = .false.
-      if (present(flag)) optval = flag
-   end function optval
+   pure logical function optval_logical(x, default) result(y)
+      logical, intent(in), optional :: x
+      logical, intent(in) :: default
+      y = default
+      if (present(x)) y = x
+   end function optval_logical
+
+   pure integer function optval_integer(x, default) result(y)
+      integer, intent(in), optional :: x
+      integer, intent(in) :: default
+      y = default
+      if (present(x)) y = x
+   end function optval_integer
+
+   pure real(wp) function optval_real(x, default) result(y)
+      real(wp), intent(in), optional :: x
+      real(wp), intent(in) :: default
+      y = default
+      if (present(x)) y = x
+   end function optval_real
 
 end module wa_validate

@@ -22,22 +22,24 @@ module wavyadhesion
       md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
       md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
       md_no_contact_family
-   use wa_branch, only: branch_type, trace_options, trace_branch, event_none, event_fold, &
-      event_switch, event_jump_start, event_jump_end, event_full_contact_reached, &
+   use wa_branch_types, only: branch_type, trace_options
+   use wa_branch, only: trace_branch, event_none, event_fold, event_switch, &
+      event_jump_start, event_jump_end, event_full_contact_reached, &
       event_full_contact_left, event_pull_off, event_branch_end, event_a_turn
    use wa_loadpath, only: path_from_branch
    use wa_loadpath, only: path_type, load_path, critical_forces, critical_sweep, &
       mechanism_change, stage_loading, stage_unloading, mechanism_gradual, &
       mechanism_jump_case1, mechanism_jump_case2, mechanism_snap
-   use wa_map, only: map_type, map_boundary, adhesion_map, boundary_code, boundary_meaning, &
+   use wa_map_types, only: map_type, map_boundary, boundary_code, boundary_meaning, &
       map_end_grid, map_end_inside, map_end_mu_range, map_end_failed, map_point, &
       special_meaning, map_point_meet, map_point_turn, map_point_end, map_point_fail
+   use wa_map, only: adhesion_map
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
       gap_event_interaction_lost, load_jump_energies
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
       gap_critical_values, gap_critical_count, gap_critical_names
-   use wa_map, only: map_control_load, map_control_gap, map_control_both
+   use wa_map_types, only: map_control_load, map_control_gap, map_control_both
    use wa_gapmech, only: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
    implicit none
    private
