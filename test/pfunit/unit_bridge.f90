@@ -1,20 +1,10 @@
 !> Runs the fpm unit tests of test/unit by suite and name for the pFUnit modules in this
-!> folder (pf_<suite>.pf), so that each test's logic stays in test/unit. Plain Fortran:
-!> it knows nothing of pFUnit.
+!> folder (pf_<suite>.pf), so that each test's logic stays in test/unit. It looks suites
+!> up in the table of test/unit/suites.f90 at run time, so it holds no list of its own.
+!> Plain Fortran: it knows nothing of pFUnit.
 module unit_bridge
-   use harness, only: error_type, unittest_type
-   use test_params, only: collect_params
-   use test_kernels, only: collect_kernels
-   use test_elliptic, only: collect_elliptic
-   use test_dw, only: collect_dw
-   use test_md, only: collect_md
-   use test_reference, only: collect_reference
-   use test_branch, only: collect_branch
-   use test_robustness, only: collect_robustness
-   use test_sweep, only: collect_sweep
-   use test_separation, only: collect_separation
-   use test_map, only: collect_map
-   use test_gappath, only: collect_gappath
+   use harness, only: error_type, unittest_type, testsuite_type
+   use suites, only: collect_suites
    implicit none
    private
 
@@ -22,25 +12,22 @@ module unit_bridge
 
 contains
 
-   !> The tests of one suite (none for an unknown suite name).
-   subroutine collect(suite, tests)
+   !> The tests of one suite; found = .false. (and no tests) for a name not in the table.
+   subroutine collect(suite, tests, found)
       character(len=*), intent(in) :: suite
       type(unittest_type), allocatable, intent(out) :: tests(:)
-      select case (suite)
-      case ("params"); call collect_params(tests)
-      case ("kernels"); call collect_kernels(tests)
-      case ("elliptic"); call collect_elliptic(tests)
-      case ("dw"); call collect_dw(tests)
-      case ("md"); call collect_md(tests)
-      case ("reference"); call collect_reference(tests)
-      case ("branch"); call collect_branch(tests)
-      case ("robustness"); call collect_robustness(tests)
-      case ("sweep"); call collect_sweep(tests)
-      case ("separation"); call collect_separation(tests)
-      case ("map"); call collect_map(tests)
-      case ("gappath"); call collect_gappath(tests)
-      case default; allocate (tests(0))
-      end select
+      logical, intent(out) :: found
+      type(testsuite_type), allocatable :: testsuites(:)
+      integer :: i
+      call collect_suites(testsuites)
+      do i = 1, size(testsuites)
+         if (testsuites(i)%name /= suite) cycle
+         call testsuites(i)%collect(tests)
+         found = .true.
+         return
+      end do
+      allocate (tests(0))
+      found = .false.
    end subroutine collect
 
    !> Runs test `name` of `suite`: "" when it passed, else the harness's message (or
@@ -50,9 +37,14 @@ contains
       character(len=:), allocatable :: message
       type(unittest_type), allocatable :: tests(:)
       type(error_type), allocatable :: error
+      logical :: found
       integer :: i
 
-      call collect(suite, tests)
+      call collect(suite, tests, found)
+      if (.not. found) then
+         message = "no unit suite '"//suite//"' in test/unit/suites.f90"
+         return
+      end if
       do i = 1, size(tests)
          if (tests(i)%name /= name) cycle
          call tests(i)%test(error)
@@ -66,12 +58,14 @@ contains
       message = "no test '"//name//"' in unit suite '"//suite//"'"
    end function unit_test_error
 
-   !> How many tests `suite` holds.
+   !> How many tests `suite` holds (-1 for a suite not in the table).
    integer function unit_test_count(suite)
       character(len=*), intent(in) :: suite
       type(unittest_type), allocatable :: tests(:)
-      call collect(suite, tests)
+      logical :: found
+      call collect(suite, tests, found)
       unit_test_count = size(tests)
+      if (.not. found) unit_test_count = -1
    end function unit_test_count
 
 end module unit_bridge

@@ -6,6 +6,7 @@ module harness
    private
 
    public :: error_type, unittest_type, new_unittest, test_interface
+   public :: testsuite_type, new_testsuite, collect_interface
    public :: check, check_close, run_suite
 
    !> Allocated only when a test fails; carries the reason.
@@ -30,6 +31,21 @@ module harness
       procedure(test_interface), pointer, nopass :: test => null()
    end type unittest_type
 
+   abstract interface
+      !> A suite's tests: each test module's public collect_<suite>.
+      subroutine collect_interface(testsuite)
+         import :: unittest_type
+         type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      end subroutine collect_interface
+   end interface
+
+   !> A named suite (the table of suites is test/unit/suites.f90). Fixed-length name, as
+   !> unittest_type's.
+   type :: testsuite_type
+      character(len=name_len) :: name = ""
+      procedure(collect_interface), pointer, nopass :: collect => null()
+   end type testsuite_type
+
 contains
 
    function new_unittest(name, test) result(self)
@@ -40,6 +56,15 @@ contains
       self%name = name
       self%test => test
    end function new_unittest
+
+   function new_testsuite(name, collect) result(self)
+      character(len=*), intent(in) :: name
+      procedure(collect_interface) :: collect
+      type(testsuite_type) :: self
+      if (len(name) > name_len) error stop "new_testsuite: suite name longer than name_len"
+      self%name = name
+      self%collect => collect
+   end function new_testsuite
 
    !> Fail with `message` unless `condition` holds (keeps the first failure).
    subroutine check(error, condition, message)
