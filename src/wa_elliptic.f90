@@ -171,7 +171,7 @@ contains
    !> W = I*(A,C)/(C^2-A^2)^2 by tanh-sinh quadrature of (E1), for cross-checks and
    !> work-precision comparisons; C^2-A^2 and 1-C^2 are formed as (C-A)(C+A), (1-C)(1+C).
    !> The step is halved until two estimates agree to rtol (at least 3 halvings).
-   subroutine istar_quadrature(a, c, w, status, rtol, neval)
+   pure subroutine istar_quadrature(a, c, w, status, rtol, neval)
       !> A, 0 < A < C
       real(wp), intent(in) :: a
       !> C, A < C <= 1

@@ -15,12 +15,13 @@
 !>   K = int_0^1 artanh(r) r dr / ((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)),
 !> whose integrand has a log singularity at r = 1 and, when c* -> 1/2 or a* -> 0, a pole
 !> and a branch point at distance ~ 1/T^2 beyond it. K is summed with fixed Gauss rules
-!> (tools/md_gauss_rules.py): Gauss-Legendre on r in [0, 1/sqrt 2]; in y = sqrt(1 - r^2)
+!> (tools/generate/md_gauss_rules.py): Gauss-Legendre on r in [0, 1/sqrt 2]; in y = sqrt(1 - r^2)
 !> (where those singularities sit at y = +-i/T) geometric levels [y_s 4^-(j+1), y_s 4^-j]
 !> down to y ~ 1/T, then a tail with Gauss rules for the weights u and -u ln u.
 !> Measured error <= 3.2e-15 relative against mpmath from a* = 1e-12 to 1/2 - 1e-12 and
 !> c*-a* from 1e-12 (1/2-a*) to (1 - 1e-10)(1/2-a*), at 1 us per Psi_c; GSL QAWS, QAG
-!> and QAGS reach 1e-12 at best, at 15-40 us (tools/md_quadrature_study.f90).
+!> and QAGS reach 1e-12 at best, at 15-40 us (`wavyadhesion-study psi`). md_options
+!> selects those alternatives instead (src/wa_quadrature.f90), for the work-precision study.
 !>
 !> Roots. F(x) = opening - Dcod tends to -Dcod as x -> -inf and to a closed form as
 !> x -> +inf (c* = 1/2). F is scanned in steps of 0.8 from below the small-zone estimate
@@ -29,25 +30,52 @@
 !> sampled extremum that could hide a pair of roots a golden-section search looks for
 !> the sign change. md_equilibrium stops at the first root.
 !>
-!> Case 2 (an extension of the paper, MODEL-NOTES.md): c* = 1/2, P* = A^2 - Sigma0, valid
+!> Case 2 (an extension of the paper, doc/theory.md): c* = 1/2, P* = A^2 - Sigma0, valid
 !> while the opening at x = L/2 stays within the Dugdale range:
 !>   sqrt(1-A^2) - A^2 ln((1 + sqrt(1-A^2))/A) <= Dcod.
 module wa_md
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, wa_capacity_too_small, &
-      wa_numerical_error, set_error
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
+      wa_capacity_too_small, wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p, sincos_pi
    use wa_separation, only: md_state_gbar
+   use wa_gsl, only: quad_psi_k
+   use wa_quadrature, only: psi_gauss_rules, k_gauss, quad_psi_qaws, quad_psi_qag, quad_psi_qags
    implicit none
    private
 
    public :: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, md_midgap_opening
    public :: md_curve_residual, md_curve_state, md_curve_values
+   public :: md_options, md_prepare_options, md_psi_rules, md_psi_gauss, md_psi_qaws, &
+      md_psi_qag, md_psi_qags
+
+   !> Ways to compute Psi_c (2.27d) in the residual (doc/accuracy-performance.md): the
+   !> library's fixed graded Gauss rules (default); singularity subtraction only, one
+   !> psi_nodes-point Gauss rule for the weight -ln(1-r) plus Gauss-Legendre for ln(1+r);
+   !> GSL QAWS (log weight) + QAG; GSL QAG (GK21); GSL QAGS; the GSL ones to psi_rtol.
+   integer, parameter :: md_psi_rules = 1, md_psi_gauss = 2, md_psi_qaws = 3, &
+      md_psi_qag = 4, md_psi_qags = 5
+
+   !> Numerical choices of md_equilibrium; the defaults are the library's. The others
+   !> exist for the work-precision study: each is slower or less accurate.
+   type :: md_options
+      !> How Psi_c is computed (md_psi_*)
+      integer :: psi_method = md_psi_rules
+      !> Nodes of each rule of md_psi_gauss (1-256)
+      integer :: psi_nodes = 32
+      !> epsrel of the GSL methods (>= 1.1e-14: GSL refuses less)
+      real(wp) :: psi_rtol = 1.0e-10_wp
+      !> Brent's absolute tolerance in x = ln tan s (plus 2 eps |x|)
+      real(wp) :: xtol = 4.0_wp*epsilon(1.0_wp)
+      !> The md_psi_gauss rules (md_prepare_options builds them once; without them
+      !> md_equilibrium builds them at every call)
+      real(wp), allocatable :: gauss_rule(:, :)
+   end type md_options
 
    !> sin and cos of pi a*; for the root scan of `solve` (add_scan_limits) also the
    !> opening at c* = 1/2 and the scan range in x = ln tan s.
@@ -231,19 +259,62 @@ contains
    !> P* = 1 - Sigma0 (zone_case 3); mu = 0: Westergaard, case 2 with P* = A^2.
    !> a* = 0 (no contact) returns wa_no_solution; so does a* where neither case holds.
    !> 0 < a* < 1e-100 returns wa_numerical_error (not resolved in double precision).
-   pure subroutine md_equilibrium(params, a_star, state, status, errmsg)
+   !> options: the numerical choices (md_options; default: the library's); n_residuals:
+   !> the number of residual evaluations (each one Psi_c) it took.
+   pure subroutine md_equilibrium(params, a_star, state, status, errmsg, options, n_residuals)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star
       type(state_type), intent(out) :: state
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      type(md_options), intent(in), optional :: options
+      integer, intent(out), optional :: n_residuals
       type(state_type) :: states(1)
-      integer :: n_roots
+      type(md_options) :: opts
+      integer :: n_roots, nres
 
-      call solve(params, a_star, .true., states, n_roots, status, errmsg)
+      nres = 0
+      if (present(n_residuals)) n_residuals = 0
+      if (present(options)) then
+         opts = options
+         call md_prepare_options(opts, status, errmsg)
+         if (status /= wa_ok) return
+      end if
+      call solve(params, a_star, .true., opts, nres, states, n_roots, status, errmsg)
       if (status == wa_ok) state = states(1)
       if (status == wa_ok) state%gbar = md_state_gbar(params, state)
+      if (present(n_residuals)) n_residuals = nres
    end subroutine md_equilibrium
+
+   !> Check the options (a known psi_method, 1 <= psi_nodes <= 256, tolerances in (0, 1))
+   !> and build the md_psi_gauss rules if they are missing.
+   pure subroutine md_prepare_options(options, status, errmsg)
+      type(md_options), intent(inout) :: options
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      status = wa_ok
+      if (options%psi_method < md_psi_rules .or. options%psi_method > md_psi_qags) then
+         call set_error(wa_invalid_argument, "md_options: psi_method must be one of "// &
+            "md_psi_rules, md_psi_gauss, md_psi_qaws, md_psi_qag, md_psi_qags (1-5)", &
+            status, errmsg)
+      else if (options%psi_nodes < 1 .or. options%psi_nodes > 256) then
+         call set_error(wa_invalid_argument, "md_options: psi_nodes must be in [1, 256]", &
+            status, errmsg)
+      else if (.not. (options%psi_rtol > 0.0_wp .and. options%psi_rtol < 1.0_wp)) then
+         call set_error(wa_invalid_argument, "md_options: psi_rtol must be in (0, 1)", &
+            status, errmsg)
+      else if (.not. (options%xtol > 0.0_wp .and. options%xtol < 1.0_wp)) then
+         call set_error(wa_invalid_argument, "md_options: xtol must be in (0, 1)", &
+            status, errmsg)
+      end if
+      if (status /= wa_ok .or. options%psi_method /= md_psi_gauss) return
+      if (allocated(options%gauss_rule)) then
+         if (size(options%gauss_rule, 2) == options%psi_nodes) return
+         deallocate (options%gauss_rule)
+      end if
+      allocate (options%gauss_rule(4, options%psi_nodes))
+      call psi_gauss_rules(options%psi_nodes, options%gauss_rule)
+   end subroutine md_prepare_options
 
    !> Every MD equilibrium at a*: the case-1 roots of (2.27b) by increasing c*, then the
    !> case-2 state where its condition holds. n_roots is the total; if it exceeds
@@ -257,9 +328,11 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: found(max_roots + 1)
-      integer :: n
+      type(md_options) :: opts
+      integer :: n, nres
 
-      call solve(params, a_star, .false., found, n_roots, status, errmsg)
+      nres = 0
+      call solve(params, a_star, .false., opts, nres, found, n_roots, status, errmsg)
       if (status /= wa_ok) return
       n = min(n_roots, size(states), size(found))
       states(1:n) = found(1:n)
@@ -420,10 +493,13 @@ contains
 
    !> Validate, treat the special cases, then find the case-1 roots (all, or only the
    !> first) and add the case-2 state.
-   pure subroutine solve(params, a_star, first_only, states, n_states, status, errmsg)
+   pure subroutine solve(params, a_star, first_only, opts, nres, states, n_states, status, &
+         errmsg)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star
       logical, intent(in) :: first_only
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       type(state_type), intent(inout) :: states(:)
       integer, intent(out) :: n_states, status
       character(len=*), intent(inout), optional :: errmsg
@@ -451,7 +527,7 @@ contains
          states(1) = case2_state(params, geo)
          return
       end if
-      call find_roots(params, geo, first_only, xr, n_found, status, errmsg)
+      call find_roots(params, geo, opts, nres, first_only, xr, n_found, status, errmsg)
       if (status /= wa_ok) return
       if (n_found > max_roots) then
          call set_error(wa_numerical_error, "md: more case-1 roots at one a_star than "// &
@@ -475,9 +551,12 @@ contains
    !> Roots of F(x) = opening - Dcod, increasing: a scan from below the first root
    !> (F -> -Dcod as x -> -inf) to x_mono, each sign change refined by Brent, hidden
    !> pairs looked for at sampled extrema; then the monotone stretch up to c* = 1/2.
-   pure subroutine find_roots(params, geo, first_only, xr, n_found, status, errmsg)
+   pure subroutine find_roots(params, geo, opts, nres, first_only, xr, n_found, status, &
+         errmsg)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       logical, intent(in) :: first_only
       real(wp), intent(out) :: xr(:)
       integer, intent(out) :: n_found, status
@@ -491,19 +570,21 @@ contains
       status = wa_ok
       ! the opening is below opening_top + Sigma0 artanh(q) (Psi_c <= 0, Phi <= 1)
       if (params%dcod > geo%opening_top + params%sigma0*artanh_of(geo%q, geo%a**2)) return
-      call scan_start(params, geo, xs(3), fs(3), status, errmsg)
+      call scan_start(params, geo, opts, nres, xs(3), fs(3), status, errmsg)
       if (status /= wa_ok) return
       n_pts = 1
       do while (xs(3) < geo%x_mono .and. n_pts < max_scan_points)
          xs(1:2) = xs(2:3)
          fs(1:2) = fs(2:3)
          xs(3) = min(xs(2) + scan_step, geo%x_mono)
-         fs(3) = residual(params, geo, xs(3))
+         nres = nres + 1
+         fs(3) = residual(params, geo, xs(3), opts)
          n_pts = n_pts + 1
          if ((fs(2) < 0.0_wp) .neqv. (fs(3) < 0.0_wp)) then
-            call add_root(params, geo, xs(2), fs(2), xs(3), fs(3), xr, n_found, status, errmsg)
+            call add_root(params, geo, opts, nres, xs(2), fs(2), xs(3), fs(3), xr, n_found, &
+               status, errmsg)
          else if (n_pts >= 3) then
-            call hidden_pair(params, geo, xs, fs, xr, n_found, status, errmsg)
+            call hidden_pair(params, geo, opts, nres, xs, fs, xr, n_found, status, errmsg)
          end if
          if (status /= wa_ok .or. (first_only .and. n_found > 0)) return
       end do
@@ -512,14 +593,16 @@ contains
             status, errmsg)
          return
       end if
-      call top_root(params, geo, xs(3), fs(3), xr, n_found, status, errmsg)
+      call top_root(params, geo, opts, nres, xs(3), fs(3), xr, n_found, status, errmsg)
    end subroutine find_roots
 
    !> A point x_lo with F(x_lo) < 0 just below the first root, placed by the small-zone
    !> expansion F ~ (Sigma0 A q/pi) s^2 + (2/3) A^2 q^3 s^3 - Dcod.
-   pure subroutine scan_start(params, geo, x_lo, f_lo, status, errmsg)
+   pure subroutine scan_start(params, geo, opts, nres, x_lo, f_lo, status, errmsg)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(out) :: x_lo, f_lo
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
@@ -537,7 +620,8 @@ contains
          return
       end if
       do i = 1, 40
-         f_lo = residual(params, geo, x_lo)
+         nres = nres + 1
+         f_lo = residual(params, geo, x_lo, opts)
          if (f_lo < 0.0_wp) then
             status = wa_ok
             return
@@ -551,9 +635,11 @@ contains
 
    !> Beyond x_mono: a root iff F(x_mono) and F(+inf) = opening_top - Dcod differ in sign.
    !> If even at x_top (where c* rounds to 1/2) F keeps its sign, the root is c* = 1/2.
-   pure subroutine top_root(params, geo, x_b, f_b, xr, n_found, status, errmsg)
+   pure subroutine top_root(params, geo, opts, nres, x_b, f_b, xr, n_found, status, errmsg)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(in) :: x_b, f_b
       real(wp), intent(inout) :: xr(:)
       integer, intent(inout) :: n_found
@@ -563,18 +649,23 @@ contains
 
       status = wa_ok
       if ((f_b < 0.0_wp) .eqv. (geo%opening_top - params%dcod < 0.0_wp)) return
-      f_hi = residual(params, geo, geo%x_top)
+      nres = nres + 1
+      f_hi = residual(params, geo, geo%x_top, opts)
       if ((f_b < 0.0_wp) .neqv. (f_hi < 0.0_wp)) then
-         call add_root(params, geo, x_b, f_b, geo%x_top, f_hi, xr, n_found, status, errmsg)
+         call add_root(params, geo, opts, nres, x_b, f_b, geo%x_top, f_hi, xr, n_found, &
+            status, errmsg)
       else
          call store(xr, n_found, geo%x_top)
       end if
    end subroutine top_root
 
    !> Refine a sign change of F on [x1, x2] with Brent's method and store the root.
-   pure subroutine add_root(params, geo, x1, f1, x2, f2, xr, n_found, status, errmsg)
+   pure subroutine add_root(params, geo, opts, nres, x1, f1, x2, f2, xr, n_found, status, &
+         errmsg)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(in) :: x1, f1, x2, f2
       real(wp), intent(inout) :: xr(:)
       integer, intent(inout) :: n_found
@@ -585,11 +676,12 @@ contains
       logical :: done
       integer :: iter
 
-      call brent_init(solver, x1, f1, x2, f2, 4.0_wp*epsilon(1.0_wp))
+      call brent_init(solver, x1, f1, x2, f2, opts%xtol)
       do iter = 1, max_iterations
          call brent_propose(solver, x, done)
          if (done) exit
-         call brent_accept(solver, residual(params, geo, x))
+         nres = nres + 1
+         call brent_accept(solver, residual(params, geo, x, opts))
       end do
       if (.not. done) then
          call set_error(wa_not_converged, "md: Brent's iteration for a case-1 root of "// &
@@ -603,9 +695,12 @@ contains
    !> Two roots between samples: at a sampled extremum xs(2) of one sign that may reach
    !> 0 (is_extremum), search the extremum by golden sections until F changes sign there,
    !> then refine both roots.
-   pure subroutine hidden_pair(params, geo, xs, fs, xr, n_found, status, errmsg)
+   pure subroutine hidden_pair(params, geo, opts, nres, xs, fs, xr, n_found, status, &
+         errmsg)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(in) :: xs(3), fs(3)
       real(wp), intent(inout) :: xr(:)
       integer, intent(inout) :: n_found
@@ -616,11 +711,11 @@ contains
 
       status = wa_ok
       if (.not. is_extremum(fs)) return
-      call probe_extremum(params, geo, xs, fs, found, xm, fm)
+      call probe_extremum(params, geo, opts, nres, xs, fs, found, xm, fm)
       if (.not. found) return
-      call add_root(params, geo, xs(1), fs(1), xm, fm, xr, n_found, status, errmsg)
+      call add_root(params, geo, opts, nres, xs(1), fs(1), xm, fm, xr, n_found, status, errmsg)
       if (status /= wa_ok) return
-      call add_root(params, geo, xm, fm, xs(3), fs(3), xr, n_found, status, errmsg)
+      call add_root(params, geo, opts, nres, xm, fm, xs(3), fs(3), xr, n_found, status, errmsg)
    end subroutine hidden_pair
 
    !> True where fs(2) is an extremum of one-signed samples that may hide two roots: the
@@ -639,9 +734,11 @@ contains
    !> Golden-section search for the extremum of F between xs(1) and xs(3); found when F
    !> changes sign at xm, given up when is_extremum says it cannot (or the bracket is
    !> below 1e-10: a double root, which counts as none).
-   pure subroutine probe_extremum(params, geo, xs, fs, found, xm, fm)
+   pure subroutine probe_extremum(params, geo, opts, nres, xs, fs, found, xm, fm)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
+      type(md_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(in) :: xs(3), fs(3)
       logical, intent(out) :: found
       real(wp), intent(out) :: xm, fm
@@ -661,7 +758,8 @@ contains
          else
             xn = x(2) - golden*(x(2) - x(1))
          end if
-         fn = residual(params, geo, xn)
+         nres = nres + 1
+         fn = residual(params, geo, xn, opts)
          xm = xn; fm = fn
          found = (fn < 0.0_wp) .neqv. (f(2) < 0.0_wp)
          if (found) return
@@ -699,14 +797,48 @@ contains
 
    ! ------------------------------------------------------------ the equations
 
-   !> F(x) = opening - Dcod, the residual of (2.27b).
-   pure function residual(params, geo, x) result(f)
+   !> F(x) = opening - Dcod, the residual of (2.27b), with Psi_c by opts%psi_method
+   !> (callers count the evaluations).
+   pure function residual(params, geo, x, opts) result(f)
       type(params_type), intent(in) :: params
       type(md_geometry), intent(in) :: geo
       real(wp), intent(in) :: x
+      type(md_options), intent(in) :: opts
       real(wp) :: f
-      f = opening(params, geo, x) - params%dcod
+      if (opts%psi_method == md_psi_rules) then
+         f = opening(params, geo, x) - params%dcod
+      else
+         f = opening_alternative(params, geo, x, opts) - params%dcod
+      end if
    end function residual
+
+   !> The opening as `opening`, with Psi_c by a method of md_options other than the default.
+   pure function opening_alternative(params, geo, x, opts) result(delta)
+      type(params_type), intent(in) :: params
+      type(md_geometry), intent(in) :: geo
+      real(wp), intent(in) :: x
+      type(md_options), intent(in) :: opts
+      real(wp) :: delta
+      type(md_zone) :: z
+      real(wp) :: k
+      if (x >= x_limit) then
+         delta = top_opening(geo%a, geo%q)
+         return
+      end if
+      z = zone_at(geo, x)
+      select case (opts%psi_method)
+      case (md_psi_gauss)
+         k = k_gauss(z%k**2, z%sn**2, z%omk2, z%cs**2, opts%gauss_rule)
+      case (md_psi_qaws)
+         k = quad_psi_k(quad_psi_qaws, z%k**2, z%sn**2, z%omk2, z%cs**2, opts%psi_rtol)
+      case (md_psi_qag)
+         k = quad_psi_k(quad_psi_qag, z%k**2, z%sn**2, z%omk2, z%cs**2, opts%psi_rtol)
+      case default
+         k = quad_psi_k(quad_psi_qags, z%k**2, z%sn**2, z%omk2, z%cs**2, opts%psi_rtol)
+      end select
+      delta = geo%a**2*excess(z%k, z%omk2, z%chi2) &
+         + params%sigma0*(dugdale_fraction(geo, x)*z%chi2 - (2.0_wp/pi)*geo%a*geo%q*z%sn**2*k)
+   end function opening_alternative
 
    !> chi_1 C - P* chi_2 + Sigma0 Psi_c   (2.27b), as the Westergaard part
    !> A^2 (k/(1-k^2) - artanh k) plus Sigma0 times the Dugdale part Phi chi_2 + Psi_c.
