@@ -34,7 +34,7 @@ module wa_quadrature
    private
 
    public :: wa_quad_istar_carlson, wa_quad_istar_qag, wa_quad_psi_k
-   public :: psi_gauss_rules, k_gauss
+   public :: psi_gauss_rules, k_gauss, psi_k_gsl, sort2
    public :: quad_psi_qaws, quad_psi_qag, quad_psi_qags
 
    !> Methods of wa_quad_psi_k
@@ -103,22 +103,34 @@ contains
 
    ! ------------------------------------------------------------------ MD: K of Psi_c
 
-   !> K by GSL: method quad_psi_qaws (QAWS with weight ln(1-r) plus QAG for the ln(1+r)
-   !> part), quad_psi_qag (QAG, GK21) or quad_psi_qags (QAGS) of the whole integrand;
-   !> epsrel tol, epsabs 0. NaN for an unknown method.
+   !> psi_k_gsl's K alone, for the pure interface quad_psi_k.
    function wa_quad_psi_k(method, k2, s2, omk2, cs2, tol) result(total) &
          bind(C, name="wa_quad_psi_k")
       integer(c_int), value, intent(in) :: method
       real(c_double), value, intent(in) :: k2, s2, omk2, cs2, tol
       real(c_double) :: total
+      integer :: gsl_status
+      call psi_k_gsl(int(method), k2, s2, omk2, cs2, tol, total, gsl_status)
+   end function wa_quad_psi_k
+
+   !> K by GSL: method quad_psi_qaws (QAWS with weight ln(1-r) plus QAG for the ln(1+r)
+   !> part), quad_psi_qag (QAG, GK21) or quad_psi_qags (QAGS) of the whole integrand;
+   !> epsrel tol, epsabs 0. NaN for an unknown method. gsl_status: 0, or the non-zero
+   !> status of the last GSL call that failed (total is then what GSL returned).
+   subroutine psi_k_gsl(method, k2, s2, omk2, cs2, tol, total, gsl_status)
+      integer, intent(in) :: method
+      real(wp), intent(in) :: k2, s2, omk2, cs2, tol
+      real(wp), intent(out) :: total
+      integer, intent(out) :: gsl_status
       type(psi_zone), target :: z
       real(c_double) :: r1, r2, err
       type(gsl_function) :: f
       type(c_ptr) :: work, table
       type(c_funptr) :: previous
-      integer(c_int) :: st
+      integer(c_int) :: st, st2
       integer(c_size_t), parameter :: limit = 1000
 
+      st = 0
       z = psi_zone(k2, s2, omk2, cs2)
       previous = gsl_set_error_handler_off()
       work = gsl_integration_workspace_alloc(limit)
@@ -130,8 +142,9 @@ contains
          st = gsl_integration_qaws(f, 0.0_c_double, 1.0_c_double, table, 0.0_c_double, tol, &
             limit, work, r1, err)
          f%function = c_funloc(f_log1p_rg)
-         st = gsl_integration_qag(f, 0.0_c_double, 1.0_c_double, 0.0_c_double, tol, limit, &
+         st2 = gsl_integration_qag(f, 0.0_c_double, 1.0_c_double, 0.0_c_double, tol, limit, &
             2_c_int, work, r2, err)
+         if (st2 /= 0) st = st2
          call gsl_integration_qaws_table_free(table)
          total = -0.5_wp*r1 + 0.5_wp*r2
       case (quad_psi_qag)
@@ -147,7 +160,8 @@ contains
       end select
       call gsl_integration_workspace_free(work)
       previous = gsl_set_error_handler(previous)
-   end function wa_quad_psi_k
+      gsl_status = int(st)
+   end subroutine psi_k_gsl
 
    !> r G(r) with 1 - k^2 r^2 and 1 - sin^2 r^2 formed from 1 - r without cancellation.
    pure function rg(k2, s2, omk2, cs2, r) result(f)

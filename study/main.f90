@@ -5,7 +5,7 @@
 !>
 !>   fpm run --profile release --example wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
 !>   commands: all (default: dw md peer curve extreme), dw, md, peer, curve, extreme,
-!>             samples (writes study/data/samples.txt for tools/study_reference.py check)
+!>             samples (writes study/data/samples.txt for tools/reference/study_reference.py check)
 !>   --quick: every 7th point of the work-precision sets; --no-peer: skip scipy.
 !> critical_forces is load_path's P_fc*, P_pf*; the study calls load_path for its events.
 !>
@@ -549,7 +549,7 @@ contains
       open (newunit=u, file="study/data/samples_check.txt", status="old", action="read", &
          iostat=ios)
       if (ios /= 0) then
-         write (*, '(a)') "   (no study/data/samples_check.txt: run tools/study_reference.py check)"
+         write (*, '(a)') "   (no study/data/samples_check.txt: run tools/reference/study_reference.py check)"
          return
       end if
       do
@@ -576,7 +576,7 @@ contains
    !> Pointwise (dw_roots, md_roots, principal calls) against study/data/extreme_*.txt
    !> (mpmath 50 digits), then trace_branch and critical_forces for each (alpha, mu).
    !> With write_samples, also writes study/data/samples.txt: branch points, folds, case
-   !> switches and the points that define P_fc and P_pf, for tools/study_reference.py.
+   !> switches and the points that define P_fc and P_pf, for tools/reference/study_reference.py.
    subroutine study_extreme(write_samples)
       logical, intent(in) :: write_samples
       integer :: u
@@ -632,7 +632,7 @@ contains
       mname = merge("dw", "md", model == model_dw)
       open (newunit=u, file=path, status="old", action="read", iostat=ios)
       if (ios /= 0) then
-         write (*, '(a)') "   (missing "//path//": python3 tools/study_reference.py grid)"
+         write (*, '(a)') "   (missing "//path//": python3 tools/reference/study_reference.py grid)"
          return
       end if
       close (u)

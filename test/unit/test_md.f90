@@ -1,5 +1,5 @@
 !> Tests of the Maugis-Dugdale module wa_md: Psi_c and the roots against mpmath
-!> (tools/md_reference.py and test/data/md.txt), the JKR and Westergaard limits, the
+!> (tools/reference/md_reference.py and test/data/md.txt), the JKR and Westergaard limits, the
 !> special and invalid arguments, and a NaN-free sweep over the extended range.
 module test_md
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
@@ -42,7 +42,7 @@ contains
          new_unittest("reference_table", test_table)]
    end subroutine collect_md
 
-   !> Psi_c (2.27d) against mpmath (tools/md_reference.py psi, 32 digits), including
+   !> Psi_c (2.27d) against mpmath (tools/reference/md_reference.py psi, 32 digits), including
    !> a* -> 0, a* -> 1/2, a zone of 1e-12 relative width and c* -> 1/2.
    subroutine test_psi_c_mpmath(error)
       type(error_type), allocatable, intent(out) :: error
@@ -106,7 +106,7 @@ contains
    end subroutine test_formulas
 
    !> Single-root points against mpmath (test/data/md.txt rows; the first also from
-   !> tools/md_reference.py roots 0.3 1 0.2).
+   !> tools/reference/md_reference.py roots 0.3 1 0.2).
    subroutine test_roots_mpmath(error)
       type(error_type), allocatable, intent(out) :: error
       call check_state(error, 0.3_wp, 1.0_wp, 0.2_wp, 1, zone_inside, &
@@ -299,7 +299,7 @@ contains
       end do
    end subroutine test_grid
 
-   !> Every row of test/data/md.txt (mpmath, tools/make_reference.py) where that file is
+   !> Every row of test/data/md.txt (mpmath, tools/reference/make_reference.py) where that file is
    !> present: same states, c*, c*-a* and P* to 1e-12 (P* absolute below 1e-3).
    subroutine test_table(error)
       type(error_type), allocatable, intent(out) :: error
