@@ -7,12 +7,13 @@
 module wa_dw
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, wa_capacity_too_small, &
-      wa_numerical_error, set_error
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
+      wa_capacity_too_small, wa_numerical_error, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
-   use wa_elliptic, only: istar_scaled
+   use wa_elliptic, only: istar_scaled, istar_quadrature, ia_star
+   use wa_gsl, only: quad_istar_carlson, quad_istar_qag
    use wa_kernels, only: wavy_gap_shape
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p, sincos_pi
@@ -21,6 +22,26 @@ module wa_dw
    private
 
    public :: dw_equilibrium, dw_roots, dw_residual, dw_state_at, dw_load_at, dw_traction, dw_gap
+   public :: dw_options, dw_istar_agm, dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
+
+   !> Ways to compute W = I*/(C^2-A^2)^2 in the residual (doc/accuracy-performance.md):
+   !> the closed form by Bartky's AGM (istar_scaled, the default); the Carlson form with
+   !> GSL's R_F, R_D, R_J (istar_carlson; (E3) at C = 1, where they diverge); tanh-sinh
+   !> quadrature of (E1) (istar_quadrature, which forms C^2-A^2 = (C-A)(C+A) itself);
+   !> GSL QAG (Gauss-Kronrod 21) of (E1) on the accurate coefficients (wa_quadrature).
+   integer, parameter :: dw_istar_agm = 1, dw_istar_carlson = 2, dw_istar_tanh_sinh = 3, &
+      dw_istar_qag = 4
+
+   !> Numerical choices of dw_equilibrium; the defaults are the library's. The others
+   !> exist for the work-precision study: each is slower or less accurate.
+   type :: dw_options
+      !> How W is computed (dw_istar_*)
+      integer :: istar_method = dw_istar_agm
+      !> Relative tolerance of the quadratures (tanh-sinh: >= 1e-16; QAG: >= 1.2e-14)
+      real(wp) :: istar_rtol = 1.0e-15_wp
+      !> Brent's absolute tolerance in u = ln s (plus 2 eps |u|)
+      real(wp) :: xtol = 4.0_wp*epsilon(1.0_wp)
+   end type dw_options
 
    !> sin(pi a*) and the differences that must not be formed by subtraction.
    type :: contact_geometry
@@ -39,15 +60,28 @@ contains
 
    !> Principal DW equilibrium at a*: the case-1 state if one exists, else case 2;
    !> a* = 1/2 is full contact at the threshold load P* = 1 - Sigma0/2   (2.29).
-   pure subroutine dw_equilibrium(params, a_star, state, status, errmsg)
+   !> options: the numerical choices (dw_options; default: the library's); n_residuals:
+   !> the number of residual evaluations (each one W) it took.
+   pure subroutine dw_equilibrium(params, a_star, state, status, errmsg, options, n_residuals)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star
       type(state_type), intent(out) :: state
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      type(dw_options), intent(in), optional :: options
+      integer, intent(out), optional :: n_residuals
+      type(dw_options) :: opts
       type(contact_geometry) :: geo
       real(wp) :: g_top, s
+      integer :: nres
 
+      nres = 0
+      if (present(n_residuals)) n_residuals = 0
+      if (present(options)) then
+         call check_options(options, status, errmsg)
+         if (status /= wa_ok) return
+         opts = options
+      end if
       call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
       if (status /= wa_ok) return
       geo = geometry(a_star)
@@ -55,15 +89,35 @@ contains
          state = special_state(params, geo)
          return
       end if
-      g_top = residual(params, geo, 0.0_wp)
+      nres = nres + 1
+      g_top = residual(params, geo, 0.0_wp, opts)
       if (g_top <= 0.0_wp) then          ! (2.28b) holds: no case-1 root
          state = case2_state(params, geo)
-         return
+      else
+         call solve_case1(params, geo, g_top, opts, s, status, errmsg, nres)
+         if (status == wa_ok) state = case1_state(params, geo, s)
       end if
-      call solve_case1(params, geo, g_top, s, status, errmsg)
-      if (status /= wa_ok) return
-      state = case1_state(params, geo, s)
+      if (present(n_residuals)) n_residuals = nres
    end subroutine dw_equilibrium
+
+   !> Options in range: a known istar_method, tolerances > 0.
+   pure subroutine check_options(options, status, errmsg)
+      type(dw_options), intent(in) :: options
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      status = wa_ok
+      if (options%istar_method < dw_istar_agm .or. options%istar_method > dw_istar_qag) then
+         call set_error(wa_invalid_argument, "dw_options: istar_method must be one of "// &
+            "dw_istar_agm, dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag (1-4)", &
+            status, errmsg)
+      else if (.not. (options%istar_rtol > 0.0_wp .and. options%istar_rtol < 1.0_wp)) then
+         call set_error(wa_invalid_argument, "dw_options: istar_rtol must be in (0, 1)", &
+            status, errmsg)
+      else if (.not. (options%xtol > 0.0_wp .and. options%xtol < 1.0_wp)) then
+         call set_error(wa_invalid_argument, "dw_options: xtol must be in (0, 1)", &
+            status, errmsg)
+      end if
+   end subroutine check_options
 
    !> Every DW equilibrium at a*: case-1 roots by increasing c* (each sign change of
    !> the residual on a scan is bracketed and refined), then the case-2 state where
@@ -79,8 +133,10 @@ contains
       type(state_type) :: found(scan_points)
       real(wp) :: u(scan_points), g(scan_points), s, g_top
       type(contact_geometry) :: geo
-      integer :: i
+      type(dw_options) :: opts
+      integer :: i, nres
 
+      nres = 0
       n_roots = 0
       call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
       if (status /= wa_ok) return
@@ -89,12 +145,14 @@ contains
          n_roots = 1
          found(1) = special_state(params, geo)
       else
-         g_top = residual(params, geo, 0.0_wp)
-         call first_root_floor(params, geo, g_top, u(1), g(1), status, errmsg)
+         nres = nres + 1
+         g_top = residual(params, geo, 0.0_wp, opts)
+         call first_root_floor(params, geo, g_top, opts, nres, u(1), g(1), status, errmsg)
          if (status /= wa_ok) return
          u = scan_abscissae(params, geo, u(1))
          do i = 1, scan_points
-            g(i) = residual(params, geo, u(i))
+            nres = nres + 1
+            g(i) = residual(params, geo, u(i), opts)
          end do
          if (any(ieee_is_nan(g))) then
             call set_error(wa_numerical_error, unresolved_zone, status, errmsg)
@@ -102,7 +160,8 @@ contains
          end if
          do i = 1, scan_points - 1
             if (g(i)*g(i + 1) > 0.0_wp .or. g(i) == 0.0_wp) cycle
-            call refine(params, geo, u(i), g(i), u(i + 1), g(i + 1), s, status, errmsg)
+            call refine(params, geo, u(i), g(i), u(i + 1), g(i + 1), opts, s, status, errmsg, &
+               nres)
             if (status /= wa_ok) return
             n_roots = n_roots + 1
             found(n_roots) = case1_state(params, geo, s)
@@ -127,7 +186,7 @@ contains
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: a_star, u
       real(wp) :: g
-      g = residual(params, geometry(a_star), u)
+      g = residual(params, geometry(a_star), u, dw_options())
    end function dw_residual
 
    !> Total DW surface traction p/p* at x* (period 1) for a solved state:
@@ -151,7 +210,7 @@ contains
 
    !> DW gap h/Delta at x* for a solved state: (1+lambda) h_W(a) - lambda h_W(c), where
    !> h_W(a) = 2 [S sqrt(S^2-A^2) - A^2 ln((S+sqrt(S^2-A^2))/A)] (corrected (2.16),
-   !> MODEL-NOTES.md); zero inside the contact.
+   !> doc/theory.md); zero inside the contact.
    elemental function dw_gap(params, state, x_star) result(h)
       type(params_type), intent(in) :: params
       type(state_type), intent(in) :: state
@@ -188,10 +247,12 @@ contains
 
    ! ---------------------------------------------------------------- internals
 
-   pure function residual(params, geo, u) result(g)
+   !> G(u) with W by opts%istar_method (callers count the evaluations in nres).
+   pure function residual(params, geo, u, opts) result(g)
       type(params_type), intent(in) :: params
       type(contact_geometry), intent(in) :: geo
       real(wp), intent(in) :: u
+      type(dw_options), intent(in) :: opts
       real(wp) :: g
       real(wp), parameter :: lo = 1.0e-75_wp, hi = 1.0e75_wp
       real(wp) :: c, d2, omc2, inv_lambda, k, w
@@ -199,7 +260,11 @@ contains
       call zone_of(geo, exp(u), c, d2, omc2)
       inv_lambda = 2.0_wp*sqrt(geo%one_minus_a2)*sqrt(d2)/params%sigma0   ! (2.25b)
       k = 4.0_wp*params%sigma0**2/(pi*params%alpha**2*geo%one_minus_a2)
-      w = istar_scaled(geo%a, c, d2, omc2)
+      if (opts%istar_method == dw_istar_agm) then
+         w = istar_scaled(geo%a, c, d2, omc2)
+      else
+         w = istar_alternative(opts, geo%a, c, d2, omc2)
+      end if
       ! one logarithm of the product where no factor can make it overflow or underflow
       if (min(k, d2, w) >= lo .and. max(k, d2, w, inv_lambda) <= hi) then
          g = log(k*d2*w*(1.0_wp + inv_lambda))
@@ -207,6 +272,26 @@ contains
          g = log(k) + log(d2) + log(w) + log1p(inv_lambda)
       end if
    end function residual
+
+   !> W by a method of dw_options other than the default (NaN where it fails).
+   pure function istar_alternative(opts, a, c, d2, omc2) result(w)
+      type(dw_options), intent(in) :: opts
+      real(wp), intent(in) :: a, c, d2, omc2
+      real(wp) :: w
+      integer :: st
+      select case (opts%istar_method)
+      case (dw_istar_carlson)
+         if (omc2 == 0.0_wp) then            ! R_F etc. diverge at C = 1: (E3) instead
+            w = ia_star(a, d2)/d2**2
+         else
+            w = quad_istar_carlson(a, c, d2, omc2)
+         end if
+      case (dw_istar_tanh_sinh)
+         call istar_quadrature(a, c, w, st, rtol=opts%istar_rtol)
+      case default
+         w = quad_istar_qag(a, c, d2, omc2, opts%istar_rtol)
+      end select
+   end function istar_alternative
 
    pure function geometry(a_star) result(geo)
       real(wp), intent(in) :: a_star
@@ -237,36 +322,43 @@ contains
 
    !> Bracket the case-1 root in u = ln s around the large-mu estimate
    !> C - A = 2 alpha^2 sqrt(1-A^2)/Sigma0^2 (where G ~ ln s + const), then refine.
-   pure subroutine solve_case1(params, geo, g_top, s, status, errmsg)
+   pure subroutine solve_case1(params, geo, g_top, opts, s, status, errmsg, nres)
       type(params_type), intent(in) :: params
       type(contact_geometry), intent(in) :: geo
       real(wp), intent(in) :: g_top
+      type(dw_options), intent(in) :: opts
       real(wp), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      integer, intent(inout) :: nres
       real(wp) :: u_lo, g_lo, u_hi, g_hi
 
       s = 0.0_wp
-      call first_root_floor(params, geo, g_top, u_lo, g_lo, status, errmsg, u_hi, g_hi)
+      call first_root_floor(params, geo, g_top, opts, nres, u_lo, g_lo, status, errmsg, &
+         u_hi, g_hi)
       if (status /= wa_ok) return
       if (u_hi == 0.0_wp .and. u_lo + step < 0.0_wp) then   ! tighten the upper end
-         g_hi = residual(params, geo, u_lo + step)
+         nres = nres + 1
+         g_hi = residual(params, geo, u_lo + step, opts)
          if (g_hi >= 0.0_wp) then
             u_hi = u_lo + step
          else
             u_lo = u_lo + step; g_lo = g_hi; g_hi = g_top
          end if
       end if
-      call refine(params, geo, u_lo, g_lo, u_hi, g_hi, s, status, errmsg)
+      call refine(params, geo, u_lo, g_lo, u_hi, g_hi, opts, s, status, errmsg, nres)
    end subroutine solve_case1
 
    !> A point u_lo below the first case-1 root (G(u_lo) < 0; G -> -inf as s -> 0): from
    !> the large-mu estimate of the root (or s = 1/2), walk down in steps of ln 4.
    !> (u_hi, g_hi): the last point above it (0 and g_top = G(0) if none).
-   pure subroutine first_root_floor(params, geo, g_top, u_lo, g_lo, status, errmsg, u_hi, g_hi)
+   pure subroutine first_root_floor(params, geo, g_top, opts, nres, u_lo, g_lo, status, &
+         errmsg, u_hi, g_hi)
       type(params_type), intent(in) :: params
       type(contact_geometry), intent(in) :: geo
       real(wp), intent(in) :: g_top
+      type(dw_options), intent(in) :: opts
+      integer, intent(inout) :: nres
       real(wp), intent(out) :: u_lo, g_lo
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
@@ -280,7 +372,8 @@ contains
       u_lo = min(large_mu_estimate(params, geo), log(0.5_wp))
       status = wa_ok
       do k = 1, 600
-         g_lo = residual(params, geo, u_lo)
+         nres = nres + 1
+         g_lo = residual(params, geo, u_lo, opts)
          if (ieee_is_nan(g_lo)) exit
          if (g_lo <= 0.0_wp) then
             if (present(u_hi)) u_hi = u_prev
@@ -300,23 +393,26 @@ contains
    end subroutine first_root_floor
 
    !> Brent on G(u) over a bracket [u1, u2]; s = exp(root).
-   pure subroutine refine(params, geo, u1, g1, u2, g2, s, status, errmsg)
+   pure subroutine refine(params, geo, u1, g1, u2, g2, opts, s, status, errmsg, nres)
       type(params_type), intent(in) :: params
       type(contact_geometry), intent(in) :: geo
       real(wp), intent(in) :: u1, g1, u2, g2
+      type(dw_options), intent(in) :: opts
       real(wp), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      integer, intent(inout) :: nres
       type(brent_type) :: solver
       real(wp) :: u
       logical :: done
       integer :: iter
 
-      call brent_init(solver, u1, g1, u2, g2, 4.0_wp*epsilon(1.0_wp))
+      call brent_init(solver, u1, g1, u2, g2, opts%xtol)
       do iter = 1, max_iterations
          call brent_propose(solver, u, done)
          if (done) exit
-         call brent_accept(solver, residual(params, geo, u))
+         nres = nres + 1
+         call brent_accept(solver, residual(params, geo, u, opts))
       end do
       s = exp(solver%b)
       if (.not. done) then

@@ -32,7 +32,7 @@
 !>    8 I_A* = s(2 + A^2) - A^2 (4 - A^2) atanh(s),   s = sqrt(1-A^2)                   (E4)
 !>    I_A*   = (2/15) z^(5/2) 2F1(1/2, 2; 7/2; z),     z = 1-A^2                         (E5)
 !>
-!> The equivalent form in Carlson's integrals, derived and checked in tools/check_istar.py,
+!> The equivalent form in Carlson's integrals, derived and checked in study/verify/check_istar.py,
 !>    W = sqrt(b1)/(2A) [2 al R_F(0,x,y) + (2/3) be R_D(0,y,x) + (2/3) ga R_J(0,x,y,1)],
 !>    al = (xy-2x+1)/(8(x-1)(y-1)),  be = -x(x-y)(xy-2x+2y-1)/(8(x-1)^2(y-1)),
 !>    ga = (x^2y^2-4xy^2+6xy-4x+1)/(8(x-1)^2(y-1)),
@@ -77,7 +77,7 @@ contains
    !> inputs: a = A >= 1e-150, c = C in [A, 1], d2 = C^2-A^2 >= 0, omc2 = 1-C^2 >= 0 (may be
    !> 0), d2 + omc2 = 1-A^2 > 0. At d2 = 0 it returns the limit pi sqrt(1-A^2)/(16A).
    !> For 0 <= A < 1e-150 it returns W(0,C) (istar_scaled_a0), which needs C >= 1e-100.
-   !> Relative error below 1.5e-15 (measured against mpmath, tools/check_istar.py), about
+   !> Relative error below 1.5e-15 (measured against mpmath, study/verify/check_istar.py), about
    !> 100 ns per call. NaN for invalid input.
    elemental function istar_scaled(a, c, d2, omc2) result(w)
       !> A = sin(pi a*)
@@ -171,7 +171,7 @@ contains
    !> W = I*(A,C)/(C^2-A^2)^2 by tanh-sinh quadrature of (E1), for cross-checks and
    !> work-precision comparisons; C^2-A^2 and 1-C^2 are formed as (C-A)(C+A), (1-C)(1+C).
    !> The step is halved until two estimates agree to rtol (at least 3 halvings).
-   subroutine istar_quadrature(a, c, w, status, rtol, neval)
+   pure subroutine istar_quadrature(a, c, w, status, rtol, neval)
       !> A, 0 < A < C
       real(wp), intent(in) :: a
       !> C, A < C <= 1

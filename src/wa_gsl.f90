@@ -27,6 +27,7 @@ module wa_gsl
    public :: gsl_sf_ellint_rf_e, gsl_sf_ellint_rd_e, gsl_sf_ellint_rj_e
    public :: gsl_sf_ellint_rf, gsl_sf_ellint_rd, gsl_sf_ellint_rj
    public :: gsl_set_error_handler_off
+   public :: quad_istar_carlson, quad_istar_qag, quad_psi_k
    public :: gsl_sf_clausen
    public :: gsl_integration_workspace_alloc, gsl_integration_workspace_free
    public :: gsl_integration_qaws_table_alloc, gsl_integration_qaws_table_free
@@ -99,6 +100,33 @@ module wa_gsl
          import :: c_funptr
          type(c_funptr) :: previous
       end function gsl_set_error_handler_off
+
+      !> The GSL-based alternatives of wa_quadrature (which defines them, bind(C)), seen
+      !> as what they are from the caller's side: pure functions of their value
+      !> arguments (each allocates and frees its own workspace and switches GSL's abort
+      !> handler off; NaN where GSL fails), so that the options
+      !> of the pure dw_equilibrium and md_equilibrium can select them.
+      pure function quad_istar_carlson(a, c, d2, omc2) result(w) &
+            bind(C, name="wa_quad_istar_carlson")
+         import :: c_double
+         real(c_double), value, intent(in) :: a, c, d2, omc2
+         real(c_double) :: w
+      end function quad_istar_carlson
+
+      pure function quad_istar_qag(a, c, d2, omc2, tol) result(w) &
+            bind(C, name="wa_quad_istar_qag")
+         import :: c_double
+         real(c_double), value, intent(in) :: a, c, d2, omc2, tol
+         real(c_double) :: w
+      end function quad_istar_qag
+
+      pure function quad_psi_k(method, k2, s2, omk2, cs2, tol) result(k) &
+            bind(C, name="wa_quad_psi_k")
+         import :: c_double, c_int
+         integer(c_int), value, intent(in) :: method
+         real(c_double), value, intent(in) :: k2, s2, omk2, cs2, tol
+         real(c_double) :: k
+      end function quad_psi_k
 
       function gsl_integration_workspace_alloc(n) result(w) &
             bind(C, name="gsl_integration_workspace_alloc")

@@ -14,8 +14,10 @@ module wavyadhesion
       zone_no_contact, model_westergaard, model_jkr, model_dw, model_md
    use wa_kernels, only: westergaard_load, jkr_load, westergaard_pressure, &
       westergaard_displacement, westergaard_gap
-   use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap
-   use wa_md, only: md_equilibrium, md_roots
+   use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap, dw_options, dw_istar_agm, &
+      dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
+   use wa_md, only: md_equilibrium, md_roots, md_options, md_prepare_options, md_psi_rules, &
+      md_psi_gauss, md_psi_qaws, md_psi_qag, md_psi_qags
    use wa_models, only: check_model, model_equilibrium, model_roots, model_state, &
       model_profile, state_c_tolerance
    use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
@@ -59,7 +61,10 @@ module wavyadhesion
    public :: westergaard_load, jkr_load, westergaard_pressure, westergaard_displacement, &
       westergaard_gap
    public :: dw_equilibrium, dw_roots, dw_traction, dw_gap
+   public :: dw_options, dw_istar_agm, dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
    public :: md_equilibrium, md_roots
+   public :: md_options, md_prepare_options, md_psi_rules, md_psi_gauss, md_psi_qaws, &
+      md_psi_qag, md_psi_qags
    public :: check_model, model_equilibrium, model_roots, model_state, model_profile, &
       state_c_tolerance
    public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap, &

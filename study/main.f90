@@ -5,7 +5,7 @@
 !>
 !>   fpm run --profile release --example wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
 !>   commands: all (default: dw md peer curve extreme), dw, md, peer, curve, extreme,
-!>             samples (writes study/data/samples.txt for tools/study_reference.py check)
+!>             samples (writes study/data/samples.txt for tools/reference/study_reference.py check)
 !>   --quick: every 7th point of the work-precision sets; --no-peer: skip scipy.
 !> critical_forces is load_path's P_fc*, P_pf*; the study calls load_path for its events.
 !>
@@ -19,10 +19,9 @@ program wavyadhesion_study
    use wa_gsl, only: gsl_set_error_handler_off
    use wa_study_util, only: seconds, median, spec_error, ref_table, read_table, point_set, &
       ref_states_of
-   use wa_study_dw, only: dw_variant, dw_solve, w_agm, w_carlson, w_tanh_sinh, w_qag
-   use wa_study_md, only: md_variant, md_solve, psi_lib, psi_gauss, psi_qaws, psi_qag, &
-      psi_qags
-   use wa_psi_methods, only: init_psi_rules
+   use wa_dw, only: dw_options, dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
+   use wa_md, only: md_options, md_prepare_options, md_psi_gauss, md_psi_qaws, md_psi_qag, &
+      md_psi_qags
    implicit none
 
    !> One point of a work-precision set: inputs and the reference state.
@@ -49,7 +48,6 @@ program wavyadhesion_study
    type(c_funptr) :: old_handler
 
    old_handler = gsl_set_error_handler_off()
-   call init_psi_rules()
    command = "all"
    out_dir = "build/study"
    quick = .false.
@@ -119,59 +117,45 @@ contains
    subroutine study_dw_wp()
       type(wp_point), allocatable :: pts(:)
       type(wp_row), allocatable :: rows(:)
-      type(dw_variant) :: v
+      type(dw_options) :: v
       real(wp), parameter :: xtols(7) = [1e-4_wp, 1e-6_wp, 1e-8_wp, 1e-10_wp, 1e-12_wp, &
          1e-14_wp, 1e-15_wp]
       real(wp), parameter :: qtols(6) = [1e-4_wp, 1e-6_wp, 1e-8_wp, 1e-10_wp, 1e-12_wp, 1e-15_wp]
-      integer :: k, mism
+      integer :: k
       call dw_points(pts)
       write (*, '(/,a,i0,a)') "== DW work-precision: ", size(pts), &
          " case-1 points of test/data/dw.txt (alpha 0.01..10, mu 1e-3..1e3, a* 1e-6..1/2-1e-9)"
-      mism = dw_replica_check(pts)
-      write (*, '(a,i0,a)') "   replica (study/wa_study_dw.f90) vs dw_equilibrium: ", mism, &
-         " points differ (0 = bit-identical c*, P*)"
       allocate (rows(0))
       rows = [rows, dw_row("library dw_equilibrium (default)", "agm", 0.0_wp, &
          4*epsilon(1.0_wp), .true., pts)]
       do k = 1, size(xtols)
-         v = dw_variant(w_agm, 0.0_wp, xtols(k))
+         v = dw_options(xtol=xtols(k))
          rows = [rows, dw_row("AGM, Brent xtol", "agm", 0.0_wp, xtols(k), .false., pts, v)]
       end do
-      v = dw_variant(w_agm, 0.0_wp, 4*epsilon(1.0_wp))
-      rows = [rows, dw_row("AGM (replica of the default)", "agm", 0.0_wp, v%xtol, .false., pts, v)]
-      v = dw_variant(w_carlson, 0.0_wp, 4*epsilon(1.0_wp))
+      v = dw_options()
+      rows = [rows, dw_row("AGM (options at their defaults)", "agm", 0.0_wp, v%xtol, .false., &
+         pts, v)]
+      v = dw_options(istar_method=dw_istar_carlson)
       rows = [rows, dw_row("Carlson R_F,R_D,R_J (GSL)", "carlson", 0.0_wp, v%xtol, .false., pts, v)]
       do k = 1, size(qtols)
-         v = dw_variant(w_tanh_sinh, qtols(k), 4*epsilon(1.0_wp))
+         v = dw_options(istar_method=dw_istar_tanh_sinh, istar_rtol=qtols(k))
          rows = [rows, dw_row("tanh-sinh quadrature, rtol", "tanh-sinh", qtols(k), v%xtol, &
             .false., pts, v)]
       end do
       do k = 1, size(qtols)
-         v = dw_variant(w_qag, max(qtols(k), 1.2e-14_wp), 4*epsilon(1.0_wp))
-         rows = [rows, dw_row("GSL QAG (GK21), epsrel", "qag", v%w_tol, v%xtol, .false., pts, v)]
+         v = dw_options(istar_method=dw_istar_qag, istar_rtol=max(qtols(k), 1.2e-14_wp))
+         rows = [rows, dw_row("GSL QAG (GK21), epsrel", "qag", v%istar_rtol, v%xtol, .false., &
+            pts, v)]
       end do
       call print_rows("dw", rows, size(pts))
    end subroutine study_dw_wp
-
-   !> Number of points where the replica with the default settings differs from the library.
-   integer function dw_replica_check(pts) result(n)
-      type(wp_point), intent(in) :: pts(:)
-      type(state_type) :: s1, s2
-      integer :: i, st1, st2, nres
-      n = 0
-      do i = 1, size(pts)
-         call dw_equilibrium(pts(i)%params, pts(i)%a_star, s1, st1)
-         call dw_solve(dw_variant(), pts(i)%params, pts(i)%a_star, s2, st2, nres)
-         if (s1%c_star /= s2%c_star .or. s1%p_star /= s2%p_star .or. st1 /= st2) n = n + 1
-      end do
-   end function dw_replica_check
 
    function dw_row(label, method, tol, xtol, library_call, pts, v) result(row)
       character(len=*), intent(in) :: label, method
       real(wp), intent(in) :: tol, xtol
       logical, intent(in) :: library_call
       type(wp_point), intent(in) :: pts(:)
-      type(dw_variant), intent(in), optional :: v
+      type(dw_options), intent(in), optional :: v
       type(wp_row) :: row
       row = measured_row(label, method, tol, xtol, library_call, pts, .true., dw=v)
    end function dw_row
@@ -184,8 +168,8 @@ contains
       type(wp_point), intent(in) :: pts(:)
       !> The model, and its solver variant (absent for the library's own call)
       logical, intent(in) :: is_dw
-      type(dw_variant), intent(in), optional :: dw
-      type(md_variant), intent(in), optional :: md
+      type(dw_options), intent(in), optional :: dw
+      type(md_options), intent(in), optional :: md
       type(wp_row) :: row
       real(wp) :: err(size(pts)), t0, best, total
       type(state_type) :: s
@@ -220,14 +204,14 @@ contains
       row%worst = [pts(i)%alpha, pts(i)%mu, pts(i)%a_star]
    end function measured_row
 
-   !> One equilibrium by the library's call or by the study's solver variant.
+   !> One equilibrium by the library's default call or with the options of a variant.
    subroutine solve_point(pt, library_call, is_dw, s, st, nres, dw, md)
       type(wp_point), intent(in) :: pt
       logical, intent(in) :: library_call, is_dw
       type(state_type), intent(out) :: s
       integer, intent(out) :: st, nres
-      type(dw_variant), intent(in), optional :: dw
-      type(md_variant), intent(in), optional :: md
+      type(dw_options), intent(in), optional :: dw
+      type(md_options), intent(in), optional :: md
       nres = 0
       if (library_call) then
          if (is_dw) then
@@ -236,9 +220,9 @@ contains
             call md_equilibrium(pt%params, pt%a_star, s, st)
          end if
       else if (is_dw) then
-         call dw_solve(dw, pt%params, pt%a_star, s, st, nres)
+         call dw_equilibrium(pt%params, pt%a_star, s, st, options=dw, n_residuals=nres)
       else
-         call md_solve(md, pt%params, pt%a_star, s, st, nres)
+         call md_equilibrium(pt%params, pt%a_star, s, st, options=md, n_residuals=nres)
       end if
    end subroutine solve_point
 
@@ -283,8 +267,8 @@ contains
    ! =============================================================== work-precision, MD
 
    !> Points of test/data/md.txt with exactly one case-1 state (that state is then the
-   !> principal one); points with two case-1 roots are left out (the replica does not
-   !> look for hidden root pairs).
+   !> principal one); points with two case-1 roots are left out (the set of the recorded
+   !> study runs, whose MD solver variants did not look for hidden root pairs).
    subroutine md_points(pts)
       type(wp_point), allocatable, intent(out) :: pts(:)
       type(ref_table) :: t
@@ -310,11 +294,11 @@ contains
    subroutine study_md_wp()
       type(wp_point), allocatable :: pts(:)
       type(wp_row), allocatable :: rows(:)
-      type(md_variant) :: v
+      type(md_options) :: v
       real(wp), parameter :: xtols(7) = [1e-4_wp, 1e-6_wp, 1e-8_wp, 1e-10_wp, 1e-12_wp, &
          1e-14_wp, 1e-15_wp]
       real(wp), parameter :: qtols(5) = [1e-6_wp, 1e-8_wp, 1e-10_wp, 1e-12_wp, 1.2e-14_wp]
-      integer :: k, nodes
+      integer :: k, nodes, st
       call md_points(pts)
       write (*, '(/,a,i0,a)') "== MD work-precision: ", size(pts), " points of test/data/md.txt"// &
          " with one case-1 state (principal state; same grid as DW)"
@@ -322,31 +306,32 @@ contains
       rows = [rows, md_row("library md_equilibrium (default)", "lib-rules", 0.0_wp, &
          4*epsilon(1.0_wp), .true., pts)]
       do k = 1, size(xtols)
-         v = md_variant(psi_lib, 0.0_wp, 0, xtols(k))
+         v = md_options(xtol=xtols(k))
          rows = [rows, md_row("lib rules, Brent xtol", "lib-rules", 0.0_wp, xtols(k), .false., &
             pts, v)]
       end do
-      v = md_variant(psi_lib, 0.0_wp, 0, 4*epsilon(1.0_wp))
-      rows = [rows, md_row("lib rules (replica of the default)", "lib-rules", 0.0_wp, v%xtol, &
-         .false., pts, v)]
+      v = md_options()
+      rows = [rows, md_row("lib rules (options at their defaults)", "lib-rules", 0.0_wp, &
+         v%xtol, .false., pts, v)]
       do nodes = 16, 64, 16
          if (nodes == 48) cycle
-         v = md_variant(psi_gauss, 0.0_wp, nodes, 4*epsilon(1.0_wp))
+         v = md_options(psi_method=md_psi_gauss, psi_nodes=nodes)
+         call md_prepare_options(v, st)              ! the rules, once
          rows = [rows, md_row("Gauss-log + Gauss-Legendre, nodes", "gauss", real(nodes, wp), &
             v%xtol, .false., pts, v)]
       end do
       do k = 1, size(qtols)
-         v = md_variant(psi_qaws, qtols(k), 0, 4*epsilon(1.0_wp))
+         v = md_options(psi_method=md_psi_qaws, psi_rtol=qtols(k))
          rows = [rows, md_row("GSL QAWS + QAG, epsrel", "qaws", qtols(k), v%xtol, .false., pts, v)]
       end do
       do k = 1, size(qtols)
          if (qtols(k) == 1e-12_wp) cycle
-         v = md_variant(psi_qag, qtols(k), 0, 4*epsilon(1.0_wp))
+         v = md_options(psi_method=md_psi_qag, psi_rtol=qtols(k))
          rows = [rows, md_row("GSL QAG (GK21), epsrel", "qag", qtols(k), v%xtol, .false., pts, v)]
       end do
       do k = 1, size(qtols)
          if (qtols(k) == 1e-12_wp) cycle
-         v = md_variant(psi_qags, qtols(k), 0, 4*epsilon(1.0_wp))
+         v = md_options(psi_method=md_psi_qags, psi_rtol=qtols(k))
          rows = [rows, md_row("GSL QAGS, epsrel", "qags", qtols(k), v%xtol, .false., pts, v)]
       end do
       call print_rows("md", rows, size(pts))
@@ -357,7 +342,7 @@ contains
       real(wp), intent(in) :: tol, xtol
       logical, intent(in) :: library_call
       type(wp_point), intent(in) :: pts(:)
-      type(md_variant), intent(in), optional :: v
+      type(md_options), intent(in), optional :: v
       type(wp_row) :: row
       row = measured_row(label, method, tol, xtol, library_call, pts, .false., md=v)
    end function md_row
@@ -564,7 +549,7 @@ contains
       open (newunit=u, file="study/data/samples_check.txt", status="old", action="read", &
          iostat=ios)
       if (ios /= 0) then
-         write (*, '(a)') "   (no study/data/samples_check.txt: run tools/study_reference.py check)"
+         write (*, '(a)') "   (no study/data/samples_check.txt: run tools/reference/study_reference.py check)"
          return
       end if
       do
@@ -591,7 +576,7 @@ contains
    !> Pointwise (dw_roots, md_roots, principal calls) against study/data/extreme_*.txt
    !> (mpmath 50 digits), then trace_branch and critical_forces for each (alpha, mu).
    !> With write_samples, also writes study/data/samples.txt: branch points, folds, case
-   !> switches and the points that define P_fc and P_pf, for tools/study_reference.py.
+   !> switches and the points that define P_fc and P_pf, for tools/reference/study_reference.py.
    subroutine study_extreme(write_samples)
       logical, intent(in) :: write_samples
       integer :: u
@@ -647,7 +632,7 @@ contains
       mname = merge("dw", "md", model == model_dw)
       open (newunit=u, file=path, status="old", action="read", iostat=ios)
       if (ios /= 0) then
-         write (*, '(a)') "   (missing "//path//": python3 tools/study_reference.py grid)"
+         write (*, '(a)') "   (missing "//path//": python3 tools/reference/study_reference.py grid)"
          return
       end if
       close (u)
@@ -667,12 +652,10 @@ contains
          nref = count(t%zone_case(ps%first(i):ps%last(i)) /= 0)
          if (model == model_dw) then
             call dw_roots(params, ps%a_star(i), roots, n, st)
-            call dw_solve(dw_variant(), params, ps%a_star(i), s, j, nres)
-            call dw_equilibrium(params, ps%a_star(i), s, st1)
+            call dw_equilibrium(params, ps%a_star(i), s, st1, n_residuals=nres)
          else
             call md_roots(params, ps%a_star(i), roots, n, st)
-            call md_solve(md_variant(), params, ps%a_star(i), s, j, nres)
-            call md_equilibrium(params, ps%a_star(i), s, st1)
+            call md_equilibrium(params, ps%a_star(i), s, st1, n_residuals=nres)
          end if
          t_call = huge(1.0_wp)
          do r = 1, 3

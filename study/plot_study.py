@@ -72,7 +72,7 @@ def main():
             ax = axes[row, col]
             for method, label, color, marker in STYLE[model]:
                 sel = [r for r in rows if r["method"] == method and not r["lib"]
-                       and "replica" not in r["label"]]
+                       and "replica" not in r["label"] and "their defaults" not in r["label"]]
                 sel.sort(key=lambda r: r["time"])
                 ax.plot([r["time"] for r in sel], [r[key] for r in sel], marker=marker, color=color,
                         label=label, lw=1, ms=5)

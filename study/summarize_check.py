@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Summary of study/data/samples_check.txt (tools/study_reference.py check): the library's
+"""Summary of study/data/samples_check.txt (tools/reference/study_reference.py check): the library's
 traced branches, folds, case switches and critical forces against mpmath (50 digits).
 
   python3 study/summarize_check.py [study/data/samples_check.txt]

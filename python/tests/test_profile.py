@@ -1,5 +1,5 @@
 """Profiles (traction, gap) and the mean gap gbar in the Python layer: values of the mpmath
-tables test/data/separation_*.txt (tools/make_separation_reference.py), the identities
+tables test/data/separation_*.txt (tools/reference/make_separation_reference.py), the identities
 (traction mean = P*, gap = 0 on the contact, gap mean = gbar), and the errors."""
 
 import numpy as np

@@ -304,7 +304,7 @@ def test_md_huge_sigma0_is_an_honest_numerical_error(call):
 
 def test_jkr_profile_tiny_a_star_reproducer():
     """wa_profile(1, 5.53e-07, 1.3, 5.59e-266, 5.59e-266) was NUMERICAL_ERROR; values from
-    test/data/separation_tiny.txt (mpmath, tools/make_tiny_contact_reference.py)."""
+    test/data/separation_tiny.txt (mpmath, tools/reference/make_tiny_contact_reference.py)."""
     a = 5.59e-266
     prof = wa.profile("jkr", 5.53e-07, 1.3, a, a, x=[0.0, 2 * a, 0.25])
     expected_t = -1.3196060288092605297e+126

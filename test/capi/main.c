@@ -1039,7 +1039,7 @@ static void test_profile(void) {
          }
       }
    }
-   /* values of tools/make_separation_reference.py (test/data/separation_*.txt rows) */
+   /* values of tools/reference/make_separation_reference.py (test/data/separation_*.txt rows) */
    {
       double xs = 0.36, tt, hh;
       st = wa_profile(WA_MODEL_MD, 0.01, 0.001, 0.3, 0.5, 1, &xs, &tt, &hh);

@@ -1,4 +1,4 @@
-!> Tests of wa_elliptic: the closed forms against mpmath references (tools/check_istar.py),
+!> Tests of wa_elliptic: the closed forms against mpmath references (study/verify/check_istar.py),
 !> against tanh-sinh quadrature, the limits C = 1 and C -> A, and the extremes of the domain.
 module test_elliptic
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, ieee_quiet_nan
@@ -24,7 +24,7 @@ module test_elliptic
    !> Tolerances: mpmath references (a few ulp), two of our own algorithms, quadrature.
    real(wp), parameter :: rtol_ref = 5.0e-15_wp, rtol_pair = 5.0e-15_wp, rtol_quad = 1.0e-13_wp
 
-   !> Printed by `python3 tools/check_istar.py --fortran` (mp.dps = 40, tanh-sinh quadrature):
+   !> Printed by `python3 study/verify/check_istar.py --fortran` (mp.dps = 40, tanh-sinh quadrature):
    !> interior, C -> A (relative gap 1e-16 ... 0.5), C -> 1 (1-C^2 down to 1e-40 and 0),
    !> A from 1e-12 to 1 - A^2 = 1e-17.
    type(w_case), parameter :: w_ref(*) = [ &

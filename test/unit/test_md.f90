@@ -1,5 +1,5 @@
 !> Tests of the Maugis-Dugdale module wa_md: Psi_c and the roots against mpmath
-!> (tools/md_reference.py and test/data/md.txt), the JKR and Westergaard limits, the
+!> (tools/reference/md_reference.py and test/data/md.txt), the JKR and Westergaard limits, the
 !> special and invalid arguments, and a NaN-free sweep over the extended range.
 module test_md
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
@@ -8,7 +8,8 @@ module test_md
    use wa_params, only: params_type, new_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact
    use wa_md, only: md_equilibrium, md_roots, md_load, md_opening, md_psi_c, &
-      md_midgap_opening
+      md_midgap_opening, md_options, md_prepare_options, md_psi_gauss, md_psi_qaws, &
+      md_psi_qag, md_psi_qags
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
@@ -39,10 +40,11 @@ contains
          new_unittest("invalid_arguments", test_invalid), &
          new_unittest("capacity_too_small", test_capacity), &
          new_unittest("no_nan_extended_grid", test_grid), &
-         new_unittest("reference_table", test_table)]
+         new_unittest("reference_table", test_table), &
+         new_unittest("options", test_options)]
    end subroutine collect_md
 
-   !> Psi_c (2.27d) against mpmath (tools/md_reference.py psi, 32 digits), including
+   !> Psi_c (2.27d) against mpmath (tools/reference/md_reference.py psi, 32 digits), including
    !> a* -> 0, a* -> 1/2, a zone of 1e-12 relative width and c* -> 1/2.
    subroutine test_psi_c_mpmath(error)
       type(error_type), allocatable, intent(out) :: error
@@ -106,7 +108,7 @@ contains
    end subroutine test_formulas
 
    !> Single-root points against mpmath (test/data/md.txt rows; the first also from
-   !> tools/md_reference.py roots 0.3 1 0.2).
+   !> tools/reference/md_reference.py roots 0.3 1 0.2).
    subroutine test_roots_mpmath(error)
       type(error_type), allocatable, intent(out) :: error
       call check_state(error, 0.3_wp, 1.0_wp, 0.2_wp, 1, zone_inside, &
@@ -299,7 +301,7 @@ contains
       end do
    end subroutine test_grid
 
-   !> Every row of test/data/md.txt (mpmath, tools/make_reference.py) where that file is
+   !> Every row of test/data/md.txt (mpmath, tools/reference/make_reference.py) where that file is
    !> present: same states, c*, c*-a* and P* to 1e-12 (P* absolute below 1e-3).
    subroutine test_table(error)
       type(error_type), allocatable, intent(out) :: error
@@ -407,5 +409,44 @@ contains
       err(3) = abs(states(best)%p_star - row(6))/merge(abs(row(6)), 1.0_wp, abs(row(6)) >= 1e-3_wp)
       worst = max(worst, err)
    end subroutine compare_row
+
+   !> md_options: at their defaults the state of the default call, bit for bit; the other
+   !> ways to compute Psi_c (GSL's adaptive quadratures, a 64-node Gauss rule) agree with
+   !> the library's rules where they work (a* = 0.25, mid-sized zone); bad options refused.
+   subroutine test_options(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(state_type) :: s0, s
+      type(md_options) :: opts(4)
+      character(len=256) :: msg
+      integer :: j, status, nres
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call md_equilibrium(params, 0.25_wp, s0, status)
+      call check(error, status == wa_ok .and. s0%zone_case == zone_inside, "default call")
+      call md_equilibrium(params, 0.25_wp, s, status, options=md_options(), n_residuals=nres)
+      call check(error, status == wa_ok .and. s%c_star == s0%c_star .and. &
+         s%p_star == s0%p_star .and. s%gbar == s0%gbar, "defaults not bit-identical")
+      call check(error, nres >= 3 .and. nres < 200, "n_residuals")
+      opts = [md_options(psi_method=md_psi_gauss, psi_nodes=64), &
+         md_options(psi_method=md_psi_qaws, psi_rtol=1.0e-12_wp), &
+         md_options(psi_method=md_psi_qag, psi_rtol=1.0e-12_wp), &
+         md_options(psi_method=md_psi_qags, psi_rtol=1.0e-12_wp)]
+      call md_prepare_options(opts(1), status)
+      call check(error, status == wa_ok .and. size(opts(1)%gauss_rule, 2) == 64, "gauss rules")
+      do j = 1, size(opts)
+         call md_equilibrium(params, 0.25_wp, s, status, options=opts(j))
+         call check(error, status == wa_ok .and. s%zone_case == zone_inside, "option: status")
+         call check_close(error, s%c_star, s0%c_star, 1.0e-8_wp, what="c* by an option")
+         call check_close(error, s%p_star, s0%p_star, 1.0e-8_wp, 1.0e-8_wp, "P* by an option")
+      end do
+      msg = ""
+      call md_equilibrium(params, 0.25_wp, s, status, msg, options=md_options(psi_nodes=0))
+      call check(error, status == wa_invalid_argument .and. index(msg, "psi_nodes") > 0, &
+         "psi_nodes = 0 accepted")
+      msg = ""
+      call md_equilibrium(params, 0.25_wp, s, status, msg, options=md_options(psi_method=9))
+      call check(error, status == wa_invalid_argument .and. index(msg, "psi_method") > 0, &
+         "bad psi_method accepted")
+   end subroutine test_options
 
 end module test_md

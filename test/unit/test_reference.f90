@@ -1,4 +1,4 @@
-!> Agreement with the mpmath reference tables in test/data (tools/make_reference.py):
+!> Agreement with the mpmath reference tables in test/data (tools/reference/make_reference.py):
 !> every state at every tabulated (alpha, mu, a*), c* and P* to SPEC section 8's tolerance.
 module test_reference
    use wavyadhesion

@@ -1,5 +1,5 @@
 !> Separation (src/wa_separation.f90): profiles and mean gap against the mpmath tables of
-!> tools/make_separation_reference.py, the identities of doc/theory.md "Separation", the
+!> tools/reference/make_separation_reference.py, the identities of doc/theory.md "Separation", the
 !> no-contact MD states, and bad input.
 module test_separation
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -431,7 +431,7 @@ contains
    end subroutine test_family
 
    !> Crest gap and mean gap of the no-contact MD states at large Sigma0 against
-   !> tools/make_crest_reference.py (mpmath, 60 digits; the Clausen forms checked there against
+   !> tools/reference/make_crest_reference.py (mpmath, 60 digits; the Clausen forms checked there against
    !> the quadrature of the gap slope). Near c* = 1/2 the two-term Clausen form rounded 4 pi c*
    !> next to 2 pi: H(1/2) came out as -2.5e7 instead of 2 Dcod - 2 = 4.95 at the reproducer of
    !> the wrong-status defect, so the reopening closure and the piece-2 states went wrong.
@@ -483,7 +483,7 @@ contains
    !> Westergaard and JKR at extreme a* (issue 7: wa_profile(1, 5.53e-07, 1.3, 5.59e-266,
    !> 5.59e-266) returned wa_numerical_error; the Westergaard traction at a* = 1e-300 was 0
    !> with wa_ok; subnormal a* gave NaN or a JKR load 2 % off) against
-   !> test/data/separation_tiny.txt (tools/make_tiny_contact_reference.py, mpmath): the
+   !> test/data/separation_tiny.txt (tools/reference/make_tiny_contact_reference.py, mpmath): the
    !> profile through model_profile, P*, gbar and the kernels' elemental forms, relative 1e-13
    !> or absolute 1e-320 (results in the subnormal range are rounded to its grid).
    subroutine test_tiny_a_star(error)

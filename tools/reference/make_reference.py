@@ -43,13 +43,13 @@ context, the roots and the printed values use mp at mp.dps = 34 (main) or 50 (ex
   secant iterations at full precision (falls back to Illinois at full precision).
 
 Usage:
-  python3 tools/make_reference.py [--only westergaard,jkr,dw,md,dw_extended,md_extended]
+  python3 tools/reference/make_reference.py [--only westergaard,jkr,dw,md,dw_extended,md_extended]
                                   [--jobs N] [--log /tmp/ref.log] [--full-md-extended]
-  (run it in the background: nohup python3 tools/make_reference.py > /tmp/ref.out 2>&1 &
+  (run it in the background: nohup python3 tools/reference/make_reference.py > /tmp/ref.out 2>&1 &
    progress goes to the log; each file is written atomically when its grid is done, so a
    restart only needs --only for the missing files)
-  python3 tools/make_reference.py --check [--nrows 10] [--seed S]   # recompute random rows at dps 50
-  python3 tools/make_reference.py --verify                          # limit / cross checks
+  python3 tools/reference/make_reference.py --check [--nrows 10] [--seed S]   # recompute random rows at dps 50
+  python3 tools/reference/make_reference.py --verify                          # limit / cross checks
 """
 
 import argparse
@@ -63,7 +63,7 @@ import time
 from mpmath import mp, fp
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+ROOT = os.path.dirname(os.path.dirname(HERE))  # tools/reference/ -> the repository root
 DATADIR = os.path.join(ROOT, "test", "data")
 
 # ----------------------------------------------------------------------------------------------
@@ -738,7 +738,7 @@ def main():
         verify()
         return
     only = [s.strip() for s in args.only.split(",") if s.strip()]
-    cmd = "python3 tools/make_reference.py --only %s" % ",".join(only)
+    cmd = "python3 tools/reference/make_reference.py --only %s" % ",".join(only)
     summary = []
     for item in only:
         if item == "westergaard":

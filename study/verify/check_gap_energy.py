@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent check of the energy lost per cycle W* under gap control (DW), with mpmath.
 
-    .venv/bin/python tools/check_gap_energy.py [--dps 25]
+    .venv/bin/python study/verify/check_gap_energy.py [--dps 25]
 
 For DW at alpha = 0.3, mu = 1 (and 0.6, 1) the mean gap falls monotonically along the
 contact curve, so the gap-controlled cycle is: approach without interaction down to the

@@ -13,9 +13,9 @@ Roots: a scan in g = c*-a* (logistic in ln, 1e-30 .. 1/2-a* - 1e-30), each sign 
 refined by mp.findroot (Anderson), then verified by bisection bounds.
 
 Usage:
-  python3 tools/md_reference.py psi  A_STAR GAP [...]            -> Psi_c
-  python3 tools/md_reference.py roots ALPHA MU A_STAR            -> rows: c* gap P* zone
-  python3 tools/md_reference.py table FILE < cases.txt          (alpha mu a_star per line)
+  python3 tools/reference/md_reference.py psi  A_STAR GAP [...]            -> Psi_c
+  python3 tools/reference/md_reference.py roots ALPHA MU A_STAR            -> rows: c* gap P* zone
+  python3 tools/reference/md_reference.py table FILE < cases.txt          (alpha mu a_star per line)
 """
 import sys
 import mpmath as mp
@@ -123,7 +123,7 @@ def main(argv):
             print(mp.nstr(c, 20), mp.nstr(g, 20), mp.nstr(p, 20), z)
     elif argv[1] == "table":
         with open(argv[2], "w") as out:
-            out.write("# alpha mu a_star c_star gap P_star zone_case  (tools/md_reference.py)\n")
+            out.write("# alpha mu a_star c_star gap P_star zone_case  (tools/reference/md_reference.py)\n")
             for line in sys.stdin:
                 if not line.strip() or line.startswith("#"):
                     continue

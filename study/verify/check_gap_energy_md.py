@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent check of the energy lost per cycle W* under gap control (MD), with mpmath.
 
-    .venv/bin/python tools/check_gap_energy_md.py [--dps 20] [--cases 0.3:1,10:63]
+    .venv/bin/python study/verify/check_gap_energy_md.py [--dps 20] [--cases 0.3:1,10:63]
                                                   [--verify-gap] [--balance] [--verbose]
 
 Everything but the starting guesses is computed here from the equations of

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draw the energy lost per cycle under gap control (issue 11): the energy map and P*-gbar* loops.
 
-    .venv/bin/python tools/plot_energy.py --outdir doc/figures
+    .venv/bin/python tools/figures/plot_energy.py --outdir doc/figures
 
 Writes two PNGs:
 * energy_lost_dw_md.png: W* (units p* Delta per unit area) and W*/(pi alpha^2/2) (the fraction

@@ -3,7 +3,7 @@
 !> ln, step 0.004, from 1e-26 to 1 - 1e-26 of 1/2 - a*) plus the case-2 state, and
 !> compare with the number of states md_roots returns. (Within ~1e-16 (1/2 - a*) of
 !> c* = 1/2 the fine grid cannot resolve 1/2 - c*; there md_roots is the finer tool.)
-!> Run by tools/md_study.sh scan (about 30 min); prints the mismatches and a histogram
+!> Run by study/md_study.sh scan (about 30 min); prints the mismatches and a histogram
 !> of case-1 roots (last run: 32000 points, 0 mismatches, 9641/18143/4216/0).
 program md_root_scan_check
    use wa_kinds, only: wp

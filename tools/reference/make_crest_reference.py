@@ -12,7 +12,7 @@ Clausen closed forms (evaluated at 60 digits the rounding of 4 pi c* next to 2 p
 --verify checks both against their definitions, the gap slope integrated from the Dugdale
 condition h(c*) = 2 Dcod and the mean of h over the period, by quadrature (30 digits).
 
-Usage: python3 tools/make_crest_reference.py [--verify]
+Usage: python3 tools/reference/make_crest_reference.py [--verify]
 """
 
 import sys

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draw traction and gap profiles of DW and MD states (cf. the paper's Figs. 2-3).
 
-    .venv/bin/python tools/plot_profiles.py -o doc/figures/profiles_alpha0.3_mu1.png
+    .venv/bin/python tools/figures/plot_profiles.py -o doc/figures/profiles_alpha0.3_mu1.png
 
 Uses the installed Python package (`pip install ./python`): wavyadhesion.profile for the
 principal state at each a*. Top row: traction p/p* against x*; bottom row: gap h/Delta.

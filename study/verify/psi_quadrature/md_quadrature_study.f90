@@ -1,6 +1,6 @@
 !> Error against run time of the ways to compute Psi_c (2.27d) for the MD model.
 !>
-!> Reference: tools/md_psi_reference.txt (mpmath, 32 digits, tools/md_reference.py), 64
+!> Reference: tools/reference/md_psi_reference.txt (mpmath, 32 digits, tools/reference/md_reference.py), 64
 !> cases a* in {1e-12, 1e-6, 1e-3, 0.05, 0.25, 0.45, 1/2-1e-6, 1/2-1e-12} times
 !> gap/(1/2-a*) in {1e-12, 1e-6, 0.01, 0.3, 0.7, 0.99, 1-1e-6, 1-1e-10}; "core" is the
 !> subset a* in [1e-3, 0.45], gap/(1/2-a*) in [0.01, 0.99], "mid" the same with
@@ -18,14 +18,16 @@
 !>   qag      GSL QAG (GK21) on the whole integrand, epsrel tol
 !>   qags     GSL QAGS (extrapolating) on the whole integrand, epsrel tol
 !> GSL workspaces and tables are allocated and freed per call, as a library would.
-!> Build and run from the repository root with tools/md_study.sh study.
+!> Run from the repository root: fpm run --profile release --example wavyadhesion-psi-quadrature
+!> (or sh study/md_study.sh study).
 program md_quadrature_study
    use, intrinsic :: iso_c_binding, only: c_funptr
    use, intrinsic :: iso_fortran_env, only: int64
    use wa_kinds, only: wp, pi
    use wa_md, only: md_psi_c
    use wa_gsl, only: gsl_set_error_handler_off
-   use wa_psi_methods, only: psi_zone, init_psi_rules, k_gauss, k_qaws, k_adaptive, sort2
+   use wa_quadrature, only: psi_gauss_rules, k_gauss, psi_k_gsl, sort2, quad_psi_qaws, &
+      quad_psi_qag, quad_psi_qags
    implicit none
 
    integer, parameter :: max_cases = 200
@@ -33,9 +35,11 @@ program md_quadrature_study
    integer :: n, u, ios
    character(len=200) :: line
    type(c_funptr) :: old
+   !> Gauss rules of 16, 32, 64 nodes (psi_gauss_rules), built once
+   real(wp) :: rule16(4, 16), rule32(4, 32), rule64(4, 64)
 
    old = gsl_set_error_handler_off()
-   open (newunit=u, file="tools/md_psi_reference.txt", status="old", action="read")
+   open (newunit=u, file="tools/reference/md_psi_reference.txt", status="old", action="read")
    n = 0
    do
       read (u, '(a)', iostat=ios) line
@@ -46,7 +50,9 @@ program md_quadrature_study
    end do
    close (u)
 
-   call init_psi_rules()
+   call psi_gauss_rules(16, rule16)
+   call psi_gauss_rules(32, rule32)
+   call psi_gauss_rules(64, rule64)
    print '(a)', "# method        tol      max_err_all  max_err_core   max_err_mid  " &
       //"median_us  (core)  gsl_fail"
    call run("lib", 0, 0.0_wp)
@@ -115,8 +121,8 @@ contains
       real(wp), intent(in) :: tol, a_star, gap
       integer, intent(inout) :: fails
       real(wp) :: v
-      type(psi_zone), target :: z
-      real(wp) :: aa, q, rm1, r, tt, sn, cs, kk
+      real(wp) :: aa, q, rm1, r, tt, sn, cs, kk, z(4)
+      integer :: gsl_status
 
       if (method == "lib") then
          v = md_psi_c(a_star, gap)
@@ -130,15 +136,23 @@ contains
       sn = tt/r
       cs = 1.0_wp/r
       kk = q*sn
-      z = psi_zone(kk**2, sn**2, cs**2 + (aa*sn)**2, cs**2)
+      z = [kk**2, sn**2, cs**2 + (aa*sn)**2, cs**2]
+      gsl_status = 0
       select case (method)
       case ("gauss")
-         v = k_gauss(z, nodes)
+         select case (nodes)
+         case (16); v = k_gauss(z(1), z(2), z(3), z(4), rule16)
+         case (32); v = k_gauss(z(1), z(2), z(3), z(4), rule32)
+         case default; v = k_gauss(z(1), z(2), z(3), z(4), rule64)
+         end select
       case ("qaws")
-         v = k_qaws(z, tol, fails)
+         call psi_k_gsl(quad_psi_qaws, z(1), z(2), z(3), z(4), tol, v, gsl_status)
+      case ("qag")
+         call psi_k_gsl(quad_psi_qag, z(1), z(2), z(3), z(4), tol, v, gsl_status)
       case default
-         v = k_adaptive(z, method == "qags", tol, fails)
+         call psi_k_gsl(quad_psi_qags, z(1), z(2), z(3), z(4), tol, v, gsl_status)
       end select
+      if (gsl_status /= 0) fails = fails + 1
       v = -(2.0_wp/pi)*aa*q*sn**2*v
    end function psi
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draw a traced branch and its load path from the CLI's csv output.
 
-    python3 tools/plot_branch.py --model dw --alpha 0.3 --mu 5 -o doc/figures/branch_dw_alpha0.3_mu5.png
+    python3 tools/figures/plot_branch.py --model dw --alpha 0.3 --mu 5 -o doc/figures/branch_dw_alpha0.3_mu5.png
 
 Runs `wavyadhesion branch` and `wavyadhesion path` (built by fpm, release profile) and plots
 P* against a*: stable pieces solid, unstable dashed, case 2 (c* = 1/2) in a second colour,

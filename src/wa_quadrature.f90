@@ -1,0 +1,353 @@
+!> The alternative quadratures that the options of dw_equilibrium and md_equilibrium
+!> select in place of the library's closed form (DW's W = I*/(C^2-A^2)^2) and fixed graded
+!> Gauss rules (MD's Psi_c): what the work-precision study (doc/accuracy-performance.md)
+!> measures the defaults against. None is used unless an option asks for it.
+!>
+!> DW, W by (E1) of src/wa_elliptic.f90:
+!>   wa_quad_istar_carlson  the Carlson form with GSL's R_F, R_D, R_J (istar_carlson)
+!>   wa_quad_istar_qag      GSL QAG (Gauss-Kronrod 21) of (E1) on the accurate coefficients
+!> MD, K = int_0^1 artanh(r) r G(r) dr, G = 1/((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)),
+!> Psi_c = -(2/pi) A q sin^2 s K (src/wa_md.f90):
+!>   psi_gauss_rules, k_gauss  singularity subtraction only: an N-node Gauss rule for the
+!>                             weight -ln(1-r) plus N-node Gauss-Legendre for ln(1+r)
+!>   wa_quad_psi_k             GSL QAWS (weight ln(1-r)) + QAG for the ln(1+r) part, or GSL
+!>                             QAG or QAGS of the whole log-singular integrand, epsrel tol
+!>
+!> The GSL ones are bind(C) and reached through the pure interfaces quad_istar_carlson,
+!> quad_istar_qag and quad_psi_k of wa_gsl: from the caller's side each is a pure function
+!> of its value arguments. Each allocates and frees its own workspace and switches GSL's
+!> abort-on-error handler off (as wa_elliptic does; GSL's handler is process-wide, so it is
+!> never restored: "off" set by any number of threads at once stays "off"). Where GSL
+!> reports a failure (tolerance not reached, roundoff detected) the result is NaN, which
+!> the solvers report as wa_numerical_error: an unconverged quadrature is never returned as
+!> a converged value (the study counts such points as failures of the method).
+module wa_quadrature
+   use, intrinsic :: iso_c_binding, only: c_double, c_int, c_ptr, c_size_t, c_funptr, &
+      c_funloc, c_loc, c_f_pointer
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_kinds, only: wp, pi
+   use wa_status, only: wa_ok
+   use wa_elliptic, only: istar_carlson
+   use wa_gsl, only: gsl_function, gsl_set_error_handler_off, &
+      gsl_integration_workspace_alloc, gsl_integration_workspace_free, &
+      gsl_integration_qaws_table_alloc, gsl_integration_qaws_table_free, &
+      gsl_integration_qaws, gsl_integration_qag, gsl_integration_qags
+   implicit none
+   private
+
+   public :: wa_quad_istar_carlson, wa_quad_istar_qag, wa_quad_psi_k
+   public :: psi_gauss_rules, k_gauss, psi_k_gsl, sort2
+   public :: quad_psi_qaws, quad_psi_qag, quad_psi_qags
+
+   !> Methods of wa_quad_psi_k
+   integer, parameter :: quad_psi_qaws = 1, quad_psi_qag = 2, quad_psi_qags = 3
+
+   !> (E1) coefficients for the GSL callback.
+   type :: e1_coef
+      real(wp) :: a1, b1, a2, b2
+   end type e1_coef
+
+   !> The Psi_c integrand's k^2, sin^2 s, 1 - k^2, cos^2 s (GSL's context pointer).
+   type :: psi_zone
+      real(wp) :: k2, s2, omk2, cs2
+   end type psi_zone
+
+contains
+
+   ! ------------------------------------------------------------------ DW: W
+
+   !> W by the Carlson form (istar_carlson); NaN where GSL fails.
+   function wa_quad_istar_carlson(a, c, d2, omc2) result(w) bind(C, name="wa_quad_istar_carlson")
+      real(c_double), value, intent(in) :: a, c, d2, omc2
+      real(c_double) :: w
+      type(c_funptr) :: previous
+      integer :: status
+      previous = gsl_set_error_handler_off()
+      call istar_carlson(a, c, d2, omc2, w, status)
+      if (status /= wa_ok) w = ieee_value(w, ieee_quiet_nan)
+   end function wa_quad_istar_carlson
+
+   !> W by GSL QAG (GK21) of (E1): int_0^(pi/2) s^2 k^2 sqrt(a1 k^2 + b1 s^2)/sqrt(a2 k^2 +
+   !> b2 s^2) dphi, a1 = 1-C^2, b1 = 1-A^2, a2 = C^2, b2 = A^2; epsrel max(tol, 1.2e-14).
+   function wa_quad_istar_qag(a, c, d2, omc2, tol) result(w) bind(C, name="wa_quad_istar_qag")
+      real(c_double), value, intent(in) :: a, c, d2, omc2, tol
+      real(c_double) :: w
+      type(e1_coef), target :: coef
+      real(c_double) :: res, err
+      type(gsl_function) :: f
+      type(c_ptr) :: work
+      type(c_funptr) :: previous
+      integer(c_int) :: st
+      integer(c_size_t), parameter :: limit = 200
+      previous = gsl_set_error_handler_off()
+      coef = e1_coef(omc2, d2 + omc2, c**2, a**2)
+      work = gsl_integration_workspace_alloc(limit)
+      f%function = c_funloc(e1_integrand)
+      f%params = c_loc(coef)
+      st = gsl_integration_qag(f, 0.0_c_double, real(0.5_wp*pi, c_double), 0.0_c_double, &
+         max(tol, 1.2e-14_wp), limit, 2_c_int, work, res, err)
+      call gsl_integration_workspace_free(work)
+      w = res
+      if (st /= 0) w = ieee_value(w, ieee_quiet_nan)
+   end function wa_quad_istar_qag
+
+   function e1_integrand(phi, ctx) result(f) bind(C, name="wa_quad_e1_integrand")
+      real(c_double), value :: phi
+      type(c_ptr), value :: ctx
+      real(c_double) :: f
+      type(e1_coef), pointer :: q
+      real(wp) :: s, k
+      call c_f_pointer(ctx, q)
+      s = sin(phi)
+      k = cos(phi)
+      f = (s*k)**2*sqrt(q%a1*k**2 + q%b1*s**2)/sqrt(q%a2*k**2 + q%b2*s**2)
+   end function e1_integrand
+
+   ! ------------------------------------------------------------------ MD: K of Psi_c
+
+   !> psi_k_gsl's K alone, for the pure interface quad_psi_k.
+   function wa_quad_psi_k(method, k2, s2, omk2, cs2, tol) result(total) &
+         bind(C, name="wa_quad_psi_k")
+      integer(c_int), value, intent(in) :: method
+      real(c_double), value, intent(in) :: k2, s2, omk2, cs2, tol
+      real(c_double) :: total
+      integer :: gsl_status
+      call psi_k_gsl(int(method), k2, s2, omk2, cs2, tol, total, gsl_status)
+      if (gsl_status /= 0) total = ieee_value(total, ieee_quiet_nan)
+   end function wa_quad_psi_k
+
+   !> K by GSL: method quad_psi_qaws (QAWS with weight ln(1-r) plus QAG for the ln(1+r)
+   !> part), quad_psi_qag (QAG, GK21) or quad_psi_qags (QAGS) of the whole integrand;
+   !> epsrel tol, epsabs 0. NaN for an unknown method. gsl_status: 0, or the non-zero
+   !> status of the last GSL call that failed (total is then what GSL returned).
+   subroutine psi_k_gsl(method, k2, s2, omk2, cs2, tol, total, gsl_status)
+      integer, intent(in) :: method
+      real(wp), intent(in) :: k2, s2, omk2, cs2, tol
+      real(wp), intent(out) :: total
+      integer, intent(out) :: gsl_status
+      type(psi_zone), target :: z
+      real(c_double) :: r1, r2, err
+      type(gsl_function) :: f
+      type(c_ptr) :: work, table
+      type(c_funptr) :: previous
+      integer(c_int) :: st, st2
+      integer(c_size_t), parameter :: limit = 1000
+
+      st = 0
+      z = psi_zone(k2, s2, omk2, cs2)
+      previous = gsl_set_error_handler_off()
+      work = gsl_integration_workspace_alloc(limit)
+      f%params = c_loc(z)
+      select case (method)
+      case (quad_psi_qaws)
+         table = gsl_integration_qaws_table_alloc(0.0_c_double, 0.0_c_double, 0_c_int, 1_c_int)
+         f%function = c_funloc(f_rg)
+         st = gsl_integration_qaws(f, 0.0_c_double, 1.0_c_double, table, 0.0_c_double, tol, &
+            limit, work, r1, err)
+         f%function = c_funloc(f_log1p_rg)
+         st2 = gsl_integration_qag(f, 0.0_c_double, 1.0_c_double, 0.0_c_double, tol, limit, &
+            2_c_int, work, r2, err)
+         if (st2 /= 0) st = st2
+         call gsl_integration_qaws_table_free(table)
+         total = -0.5_wp*r1 + 0.5_wp*r2
+      case (quad_psi_qag)
+         f%function = c_funloc(f_full)
+         st = gsl_integration_qag(f, 0.0_c_double, 1.0_c_double, 0.0_c_double, tol, limit, &
+            2_c_int, work, total, err)
+      case (quad_psi_qags)
+         f%function = c_funloc(f_full)
+         st = gsl_integration_qags(f, 0.0_c_double, 1.0_c_double, 0.0_c_double, tol, limit, &
+            work, total, err)
+      case default
+         total = ieee_value(total, ieee_quiet_nan)
+      end select
+      call gsl_integration_workspace_free(work)
+      gsl_status = int(st)
+   end subroutine psi_k_gsl
+
+   !> r G(r) with 1 - k^2 r^2 and 1 - sin^2 r^2 formed from 1 - r without cancellation.
+   pure function rg(k2, s2, omk2, cs2, r) result(f)
+      real(wp), intent(in) :: k2, s2, omk2, cs2, r
+      real(wp) :: f, y2
+      y2 = (1.0_wp - r)*(1.0_wp + r)
+      f = r/((omk2 + k2*y2)*sqrt(cs2 + s2*y2))
+   end function rg
+
+   function f_rg(r, ctx) result(f) bind(C, name="wa_quad_psi_rg")
+      real(c_double), value :: r
+      type(c_ptr), value :: ctx
+      real(c_double) :: f
+      type(psi_zone), pointer :: z
+      call c_f_pointer(ctx, z)
+      f = rg(z%k2, z%s2, z%omk2, z%cs2, r)
+   end function f_rg
+
+   function f_log1p_rg(r, ctx) result(f) bind(C, name="wa_quad_psi_log1p_rg")
+      real(c_double), value :: r
+      type(c_ptr), value :: ctx
+      real(c_double) :: f
+      type(psi_zone), pointer :: z
+      call c_f_pointer(ctx, z)
+      f = log(1.0_wp + r)*rg(z%k2, z%s2, z%omk2, z%cs2, r)
+   end function f_log1p_rg
+
+   function f_full(r, ctx) result(f) bind(C, name="wa_quad_psi_full")
+      real(c_double), value :: r
+      type(c_ptr), value :: ctx
+      real(c_double) :: f
+      type(psi_zone), pointer :: z
+      call c_f_pointer(ctx, z)
+      f = 0.0_wp
+      if (r < 1.0_wp) f = 0.5_wp*log((1.0_wp + r)/(1.0_wp - r))*rg(z%k2, z%s2, z%omk2, z%cs2, r)
+   end function f_full
+
+   !> K by the rules of psi_gauss_rules: rule(1:2, i) Gauss-Legendre nodes and weights on
+   !> [0, 1], rule(3:4, i) those of the Gauss rule for the weight -ln u on [0, 1].
+   pure function k_gauss(k2, s2, omk2, cs2, rule) result(total)
+      real(wp), intent(in) :: k2, s2, omk2, cs2
+      real(wp), intent(in) :: rule(:, :)
+      real(wp) :: total
+      integer :: i
+      total = 0
+      do i = 1, size(rule, 2)
+         ! weight -ln(u), u = 1 - r:  -(1/2) ln(1-r) r G
+         total = total + 0.5_wp*rule(4, i)*rg(k2, s2, omk2, cs2, 1.0_wp - rule(3, i)) &
+            + 0.5_wp*rule(2, i)*log(1.0_wp + rule(1, i))*rg(k2, s2, omk2, cs2, rule(1, i))
+      end do
+   end function k_gauss
+
+   !> The rules of k_gauss with n nodes each (n >= 1).
+   pure subroutine psi_gauss_rules(n, rule)
+      integer, intent(in) :: n
+      real(wp), intent(out) :: rule(4, n)
+      call gauss_legendre01(n, rule(1, :), rule(2, :))
+      call gauss_log01(n, rule(3, :), rule(4, :))
+   end subroutine psi_gauss_rules
+
+   !> Gauss-Legendre on [0, 1] (Newton on P_n).
+   pure subroutine gauss_legendre01(n, x, w)
+      integer, intent(in) :: n
+      real(wp), intent(out) :: x(n), w(n)
+      real(wp) :: z, p0, p1, p2, dp
+      integer :: i, j, it
+      do i = 1, n
+         z = cos(pi*(i - 0.25_wp)/(n + 0.5_wp))
+         do it = 1, 100
+            p0 = 1; p1 = z
+            do j = 2, n
+               p2 = ((2*j - 1)*z*p1 - (j - 1)*p0)/j
+               p0 = p1; p1 = p2
+            end do
+            dp = n*(z*p1 - p0)/(z*z - 1)
+            z = z - p1/dp
+            if (abs(p1/dp) < 1e-16_wp) exit
+         end do
+         x(i) = 0.5_wp*(1 - z)
+         w(i) = 1/((1 - z*z)*dp*dp)
+      end do
+   end subroutine gauss_legendre01
+
+   !> Gauss rule for the weight -ln(u) on [0, 1] from its modified moments against
+   !> shifted Legendre polynomials (modified Chebyshev algorithm, Gautschi), then
+   !> eigenvalues of the Jacobi matrix by the implicit QL algorithm.
+   pure subroutine gauss_log01(n, x, w)
+      integer, intent(in) :: n
+      real(wp), intent(out) :: x(n), w(n)
+      real(wp) :: alpha(n), beta(n)
+      call log_recurrence(n, alpha, beta)
+      call golub_welsch(n, alpha, beta, x, w)
+   end subroutine gauss_log01
+
+   !> Recurrence coefficients of the orthogonal polynomials for -ln(u) on [0, 1]
+   !> (modified Chebyshev algorithm with shifted monic Legendre polynomials).
+   pure subroutine log_recurrence(n, alpha, beta)
+      integer, intent(in) :: n
+      real(wp), intent(out) :: alpha(n), beta(n)
+      real(wp) :: mom(0:2*n - 1), a(0:2*n - 1), b(0:2*n - 1)
+      real(wp) :: sig(-1:2*n, 0:2*n)
+      integer :: k, l
+      real(wp) :: c
+      ! monic shifted Legendre on [0,1]: a_k = 1/2, b_k = k^2/(4(4k^2-1))
+      do k = 0, 2*n - 1
+         a(k) = 0.5_wp
+         b(k) = merge(1.0_wp, real(k, wp)**2/(4*(4*real(k, wp)**2 - 1)), k == 0)
+      end do
+      ! modified moments of -ln u against monic shifted Legendre pi_k:
+      ! int -ln(u) P*_k(u) du = (-1)^k/(k(k+1)), P*_k = ((2k)!/(k!)^2) pi_k, so
+      ! m_k = (-1)^k (k!)^2/((2k)! k (k+1)) for k >= 1, m_0 = 1
+      mom(0) = 1
+      c = 1
+      do k = 1, 2*n - 1
+         c = c*real(k, wp)/real(2*(2*k - 1), wp)     ! (k!)^2/(2k)! recursively
+         mom(k) = (-1)**k*c/real(k*(k + 1), wp)
+      end do
+      sig = 0
+      sig(0, 0:2*n - 1) = mom(0:2*n - 1)
+      alpha(1) = a(0) + mom(1)/mom(0)
+      beta(1) = mom(0)
+      do k = 1, n - 1
+         do l = k, 2*n - k - 1
+            sig(k, l) = sig(k - 1, l + 1) - (alpha(k) - a(l))*sig(k - 1, l) &
+               - beta(k)*merge(0.0_wp, sig(k - 2, l), k < 2) + b(l)*sig(k - 1, l - 1)
+         end do
+         alpha(k + 1) = a(k) + sig(k, k + 1)/sig(k, k) - sig(k - 1, k)/sig(k - 1, k - 1)
+         beta(k + 1) = sig(k, k)/sig(k - 1, k - 1)
+      end do
+   end subroutine log_recurrence
+
+   !> Nodes and weights from the Jacobi matrix (symmetric tridiagonal QL, tqli-style).
+   pure subroutine golub_welsch(n, alpha, beta, x, w)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: alpha(n), beta(n)
+      real(wp), intent(out) :: x(n), w(n)
+      real(wp) :: d(n), e(n), zz(n), gg, r, s, c, p, f, b
+      integer :: l, m, i, iter
+      d = alpha
+      e(1:n - 1) = sqrt(beta(2:n)); e(n) = 0
+      zz = 0; zz(1) = 1
+      r = 0; i = 0
+      do l = 1, n
+         iter = 0
+         do
+            do m = l, n - 1
+               if (abs(e(m)) <= epsilon(1.0_wp)*(abs(d(m)) + abs(d(m + 1)))) exit
+            end do
+            if (m == l) exit
+            iter = iter + 1
+            gg = (d(l + 1) - d(l))/(2*e(l)); r = hypot(gg, 1.0_wp)
+            gg = d(m) - d(l) + e(l)/(gg + sign(r, gg))
+            s = 1; c = 1; p = 0
+            do i = m - 1, l, -1
+               f = s*e(i); b = c*e(i)
+               r = hypot(f, gg); e(i + 1) = r
+               if (r == 0) then
+                  d(i + 1) = d(i + 1) - p; e(m) = 0; exit
+               end if
+               s = f/r; c = gg/r; gg = d(i + 1) - p
+               r = (d(i) - gg)*s + 2*c*b; p = s*r; d(i + 1) = gg + p; gg = c*r - b
+               f = zz(i + 1); zz(i + 1) = s*zz(i) + c*f; zz(i) = c*zz(i) - s*f
+            end do
+            if (r == 0 .and. i >= l) cycle
+            d(l) = d(l) - p; e(l) = gg; e(m) = 0
+         end do
+      end do
+      x = d; w = beta(1)*zz**2
+      call sort2(x, w)
+   end subroutine golub_welsch
+
+   !> Sort x increasing, carrying w along (insertion sort: n <= a few hundred).
+   pure subroutine sort2(x, w)
+      real(wp), intent(inout) :: x(:), w(:)
+      integer :: i, j
+      real(wp) :: vx, vw
+      do i = 2, size(x)
+         vx = x(i); vw = w(i); j = i - 1
+         do while (j >= 1)
+            if (x(j) <= vx) exit
+            x(j + 1) = x(j); w(j + 1) = w(j); j = j - 1
+         end do
+         x(j + 1) = vx; w(j + 1) = vw
+      end do
+   end subroutine sort2
+
+end module wa_quadrature
