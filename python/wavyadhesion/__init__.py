@@ -26,41 +26,16 @@ from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_me
 from ._map import GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._energy import EnergyLost, energy_lost
-from ._core import (
-    EVENTS,
-    MECHANISMS,
-    MODELS,
-    STAGES,
-    Branch,
-    BranchEvent,
-    ConvergenceError,
-    CriticalForces,
-    Equilibrium,
-    InvalidArgumentError,
-    InvalidTypeError,
-    LoadPath,
-    NoSolutionError,
-    Params,
-    PathEvent,
-    Profile,
-    Scales,
-    State,
-    WavyAdhesionError,
-    GapLaw,
-    critical_forces,
-    equilibrium,
-    gap_law,
-    gap_path,
-    GapPath,
-    GAP_EVENTS,
-    GAP_STAGES,
-    jkr_load,
-    load_path,
-    profile,
-    roots,
-    trace_branch,
-    westergaard_load,
-)
+from ._errors import (ConvergenceError, InvalidArgumentError, InvalidTypeError,
+                      NoSolutionError, WavyAdhesionError)
+from ._args import MODELS
+from ._equilibrium import Equilibrium, State, equilibrium, jkr_load, roots, westergaard_load
+from ._branch import EVENTS, Branch, BranchEvent, trace_branch
+from ._loadpath import (MECHANISMS, STAGES, CriticalForces, LoadPath, PathEvent,
+                        critical_forces, load_path)
+from ._profile import Profile, profile
+from ._params import Params, Scales
+from ._gap import GAP_EVENTS, GAP_STAGES, GapLaw, GapPath, gap_law, gap_path
 
 # The version of the installed distribution, which meson-python takes from the file
 # VERSION at the repository root (python/meson.build), the one source of the number.

@@ -9,9 +9,10 @@ from typing import NamedTuple
 import numpy as np
 
 from . import _wa_f2py as _f
-from ._core import (_ALPHA_MAX, _ALPHA_MIN, _CAPACITY_TOO_SMALL, _INVALID_ARGUMENT,
-                    _MU_MAX, _MU_MIN, _OK, _PATH_CAPACITY, InvalidArgumentError, _chunk_size, _flat, _float_array,
-                    _model_code, _raise, _shaped, _text, _where)
+from ._args import (ALPHA_MAX, ALPHA_MIN, MU_MAX, MU_MIN, PATH_CAPACITY, at_index, chunk_size_for,
+                    flat_f64, float_array, model_code, shaped)
+from ._errors import (CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError,
+                      message_text, raise_status)
 from ._parallel import iter_chunks
 
 __all__ = ["EnergyLost", "energy_lost"]
@@ -47,7 +48,7 @@ class EnergyLost(NamedTuple):
     @property
     def ok(self) -> np.ndarray:
         """True where the point was computed (status 0)."""
-        return np.asarray(self.status) == _OK
+        return np.asarray(self.status) == OK
 
 
 def _energy_task(task):
@@ -59,18 +60,18 @@ def _energy_task(task):
     status = np.zeros(alpha.size, dtype=np.int32)
     messages = {}
     for k in range(alpha.size):
-        capacity = _PATH_CAPACITY
+        capacity = PATH_CAPACITY
         for _ in range(8):                  # grow the event arrays (bounded)
             out = _f.fa_gap_path(capacity, code, float(alpha[k]), float(mu[k]))
             n, stat = int(out[7]), int(out[-2])
-            if stat != _CAPACITY_TOO_SMALL or n <= capacity:
+            if stat != CAPACITY_TOO_SMALL or n <= capacity:
                 break
             capacity = n
-        if stat == _OK:
+        if stat == OK:
             w[k], wf[k] = out[8], out[9]
         else:
             status[k] = stat
-            messages[k] = _text(out[-1]) or _text(_f.fa_status_text(stat))
+            messages[k] = message_text(out[-1]) or message_text(_f.fa_status_text(stat))
     return w, wf, status, messages
 
 
@@ -132,26 +133,26 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
     >>> e.W_fraction.round(4)
     array([0.1382, 0.2359])
     """
-    code = _model_code(model)
+    code = model_code(model)
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'",
-                                   _INVALID_ARGUMENT)
-    alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
+                                   INVALID_ARGUMENT)
+    alpha_b, mu_b = np.broadcast_arrays(float_array(alpha, "alpha"), float_array(mu, "mu"))
     shape = mu_b.shape
-    alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
+    alpha_f, mu_f = flat_f64(alpha_b), flat_f64(mu_b)
     if mu_f.size == 0:
         raise InvalidArgumentError("alpha and mu broadcast to an empty array: give at least "
-                                   "one point", _INVALID_ARGUMENT)
-    size = _chunk_size(chunk_size, executor, _GAP_SECONDS[code], _CHUNK_ENERGY)
+                                   "one point", INVALID_ARGUMENT)
+    size = chunk_size_for(chunk_size, executor, _GAP_SECONDS[code], _CHUNK_ENERGY)
     if errors == "raise":                      # every point validated before any work
         with np.errstate(invalid="ignore"):
-            bad = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX) &
-                    ((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX))))
+            bad = ~((alpha_f >= ALPHA_MIN) & (alpha_f <= ALPHA_MAX) &
+                    ((mu_f == 0) | ((mu_f >= MU_MIN) & (mu_f <= MU_MAX))))
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             *_, status, message = _f.fa_gap_path(1, code, float(alpha_f[i]), float(mu_f[i]))
-            _raise(status if status != _OK else _INVALID_ARGUMENT, message,
-                   _where(i + 1, shape))
+            raise_status(status if status != OK else INVALID_ARGUMENT, message,
+                   at_index(i + 1, shape))
     n_tasks = -(-mu_f.size // size)
     picks = [np.arange(t, mu_f.size, n_tasks) for t in range(n_tasks)]   # strided
     tasks = [(code, alpha_f[idx].copy(), mu_f[idx].copy()) for idx in picks]
@@ -166,10 +167,10 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
             i = int(idx[k])
             key = tuple(int(v) for v in np.unravel_index(i, shape)) if shape else ()
             if errors == "raise":
-                where = _where(i + 1, shape)
-                _raise(int(tstatus[k]), text, f"{where + ', ' if where else ''}"
+                where = at_index(i + 1, shape)
+                raise_status(int(tstatus[k]), text, f"{where + ', ' if where else ''}"
                        f"alpha = {float(alpha_f[i])!r}, mu = {float(mu_f[i])!r}")
             messages[key] = text
-    return EnergyLost(_shaped(w, shape), _shaped(wf, shape), _shaped(status, shape),
-                      dict(sorted(messages.items())), _shaped(alpha_f.copy(), shape),
-                      _shaped(mu_f.copy(), shape))
+    return EnergyLost(shaped(w, shape), shaped(wf, shape), shaped(status, shape),
+                      dict(sorted(messages.items())), shaped(alpha_f.copy(), shape),
+                      shaped(mu_f.copy(), shape))

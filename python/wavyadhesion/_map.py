@@ -8,10 +8,10 @@ from typing import Optional
 import numpy as np
 
 from . import _wa_f2py as _f
-from ._core import (MODELS, InvalidArgumentError, InvalidTypeError, _ALPHA_MAX, _ALPHA_MIN,
-                    _C_INT_MAX, _INVALID_ARGUMENT, _MAP_CELLS_MAX, _MAP_N_ALPHA_MAX,
-                    _MAP_N_MU_MAX, _MU_MAX, _MU_MIN, _OK, _count, _float_array, _model_code,
-                    _raise, _real_in, critical_forces)
+from ._args import (ALPHA_MAX, ALPHA_MIN, C_INT_MAX, MAP_CELLS_MAX, MAP_N_ALPHA_MAX, MAP_N_MU_MAX,
+                    MODELS, MU_MAX, MU_MIN, count_in, float_array, model_code, real_in)
+from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, InvalidTypeError, raise_status
+from ._loadpath import critical_forces
 from ._parallel import Background, call_interruptibly, run_chunks
 
 #: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
@@ -139,13 +139,13 @@ def _range3(spec, name, lo_min, hi_max, n_max, form):
     """(lo, hi, n) validated: reals lo < hi in [lo_min, hi_max], an integer n in
     [2, n_max]; every error names `name`'s part and the expected form."""
     if not (isinstance(spec, (tuple, list)) and len(spec) == 3):
-        raise InvalidArgumentError(f"{name} = {spec!r}: expected {form}", _INVALID_ARGUMENT)
-    lo = _real_in(spec[0], f"{name} lo", lo_min, hi_max)
-    hi = _real_in(spec[1], f"{name} hi", lo_min, hi_max)
-    n = _count(spec[2], f"{name} n", 2, n_max)
+        raise InvalidArgumentError(f"{name} = {spec!r}: expected {form}", INVALID_ARGUMENT)
+    lo = real_in(spec[0], f"{name} lo", lo_min, hi_max)
+    hi = real_in(spec[1], f"{name} hi", lo_min, hi_max)
+    n = count_in(spec[2], f"{name} n", 2, n_max)
     if not lo < hi:
         raise InvalidArgumentError(f"{name} = {spec!r}: need lo < hi (expected {form})",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     return lo, hi, n
 
 
@@ -155,30 +155,30 @@ def _grid(spec, name):
     allocated (the errors name `name` and the expected form)."""
     if isinstance(spec, (str, bytes)) or spec is None:
         raise InvalidTypeError(f"{name} = {spec!r}: expected {_ALPHA_FORM}",
-                               _INVALID_ARGUMENT)
+                               INVALID_ARGUMENT)
     if isinstance(spec, tuple) and len(spec) == 3:
-        lo, hi, n = _range3(spec, name, _ALPHA_MIN, _ALPHA_MAX, _MAP_N_ALPHA_MAX,
+        lo, hi, n = _range3(spec, name, ALPHA_MIN, ALPHA_MAX, MAP_N_ALPHA_MAX,
                             _ALPHA_FORM)
         return np.geomspace(lo, hi, n)
     if np.ndim(spec) > 1:
         raise InvalidArgumentError(f"{name}: expected {_ALPHA_FORM}; got an array of shape "
-                                   f"{np.shape(spec)}", _INVALID_ARGUMENT)
-    if not 1 <= np.size(spec) <= _MAP_N_ALPHA_MAX:
+                                   f"{np.shape(spec)}", INVALID_ARGUMENT)
+    if not 1 <= np.size(spec) <= MAP_N_ALPHA_MAX:
         raise InvalidArgumentError(f"{name} holds {np.size(spec)} values: expected 1 to "
-                                   f"{_MAP_N_ALPHA_MAX} ({_ALPHA_FORM})", _INVALID_ARGUMENT)
-    values = _float_array(spec, name).reshape(-1)
+                                   f"{MAP_N_ALPHA_MAX} ({_ALPHA_FORM})", INVALID_ARGUMENT)
+    values = float_array(spec, name).reshape(-1)
     with np.errstate(invalid="ignore"):
-        outside = np.flatnonzero(~((values >= _ALPHA_MIN) & (values <= _ALPHA_MAX)))
+        outside = np.flatnonzero(~((values >= ALPHA_MIN) & (values <= ALPHA_MAX)))
         falling = np.flatnonzero(~(values[1:] > values[:-1])) + 1
     if outside.size:
         i = int(outside[0])
         raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is outside its valid "
-                                   f"range [{_ALPHA_MIN:g}, {_ALPHA_MAX:g}]", _INVALID_ARGUMENT)
+                                   f"range [{ALPHA_MIN:g}, {ALPHA_MAX:g}]", INVALID_ARGUMENT)
     if falling.size:
         i = int(falling[0])
         raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is not greater than "
                                    f"{name}[{i - 1}] = {float(values[i - 1])!r}: the values "
-                                   "must be strictly increasing", _INVALID_ARGUMENT)
+                                   "must be strictly increasing", INVALID_ARGUMENT)
     return values
 
 
@@ -297,27 +297,27 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     InvalidTypeError
         A range, count or flag of the wrong type (a string, None, a bool as a count).
     """
-    code = _model_code(model)
+    code = model_code(model)
     if code not in (MODELS["dw"], MODELS["md"]):
         raise InvalidArgumentError(f"model = {model!r}: the adhesion map is for 'dw' or 'md' "
                                    "(westergaard and jkr have one mechanism each)",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     if not (isinstance(control, str) and control in CONTROLS):
         raise InvalidArgumentError(f"control = {control!r}: must be 'load', 'gap' or 'both'",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     if not isinstance(forces, (bool, np.bool_)):
         raise InvalidTypeError(f"forces = {forces!r}: must be True or False",
-                               _INVALID_ARGUMENT)
-    every = _count(scan_every, "scan_every", 1, _C_INT_MAX)
-    alpha_tol = _real_in(alpha_tol, "alpha_tol", 1e-15, 0.1)
-    mu_lo, mu_hi, n_mu = _range3(mu_range, "mu_range", _MU_MIN, _MU_MAX, _MAP_N_MU_MAX,
+                               INVALID_ARGUMENT)
+    every = count_in(scan_every, "scan_every", 1, C_INT_MAX)
+    alpha_tol = real_in(alpha_tol, "alpha_tol", 1e-15, 0.1)
+    mu_lo, mu_hi, n_mu = _range3(mu_range, "mu_range", MU_MIN, MU_MAX, MAP_N_MU_MAX,
                                  _MU_FORM)
     alpha = _grid(alpha_range, "alpha_range")
-    if n_mu * alpha.size > _MAP_CELLS_MAX:
+    if n_mu * alpha.size > MAP_CELLS_MAX:
         raise InvalidArgumentError(
             f"mu_range n times the number of alpha values = {n_mu} x {alpha.size} = "
-            f"{n_mu * alpha.size}: the grid may hold at most {_MAP_CELLS_MAX} cells",
-            _INVALID_ARGUMENT)
+            f"{n_mu * alpha.size}: the grid may hold at most {MAP_CELLS_MAX} cells",
+            INVALID_ARGUMENT)
     capacity = 64 * (alpha.size + 64)
     args = (n_mu, capacity, code, alpha, mu_lo, mu_hi, every, CONTROLS[control])
     pending = None
@@ -334,8 +334,8 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         out = call_interruptibly(_f.fa_adhesion_map, *args)   # Ctrl-C within 0.1 s
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, ga, gr, n_paths, status,
      message, sp_kind, sp_codes, sp_point, n_special) = out
-    if status != _OK:
-        _raise(status, message)
+    if status != OK:
+        raise_status(status, message)
     n = int(n_out)
     boundaries = []
     for c in range(1, int(curve[:n].max(initial=0)) + 1):

@@ -23,8 +23,10 @@ import warnings
 
 import numpy as np
 
-from ._core import MECHANISMS, WavyAdhesionError, critical_forces, jkr_load, \
-    load_path, trace_branch, westergaard_load
+from ._branch import trace_branch
+from ._equilibrium import jkr_load, westergaard_load
+from ._errors import WavyAdhesionError
+from ._loadpath import MECHANISMS, critical_forces, load_path
 
 __all__ = ["figure4", "figure6", "figures9_10", "mechanism_runs"]
 
