@@ -8,10 +8,15 @@ Loads are P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile); wi
 a* = a/L and c* = c/L lie in [0, 1/2]; parameters alpha > 0 (Johnson's) and mu >= 0
 (transition parameter). Models are named "westergaard", "jkr", "dw", "md".
 
+Every result converts itself to SI units: ``result.to_si(params)`` with a
+``Params.from_dimensional(...)`` gives loads in Pa and N/m, lengths and gaps in m and
+energies in J/m^2; ``result.to_dataframe()`` gives a pandas table (pandas is needed only
+then). Long sweeps take ``progress=True`` (or a callable ``fn(done, total)``).
+
 Examples
 --------
 >>> import numpy as np, wavyadhesion as wa
->>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a=np.linspace(0.01, 0.49, 5))
+>>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a_star=np.linspace(0.01, 0.49, 5))
 >>> eq.zone_case.shape
 (5,)
 >>> P_fc, P_pf = wa.critical_forces("dw", alpha=0.3, mu=np.logspace(-2, 1, 4))
@@ -36,6 +41,7 @@ from ._loadpath import (MECHANISMS, STAGES, CriticalForces, LoadPath, PathEvent,
 from ._profile import Profile, profile
 from ._params import Params, Scales
 from ._gap import GAP_EVENTS, GAP_STAGES, GapLaw, GapPath, gap_law, gap_path
+from ._results import SIValues
 
 # The version of the installed distribution, which meson-python takes from the file
 # VERSION at the repository root (python/meson.build), the one source of the number.
@@ -77,6 +83,7 @@ __all__ = [
     "State",
     "WavyAdhesionError",
     "GapLaw",
+    "SIValues",
     "critical_forces",
     "equilibrium",
     "gap_law",

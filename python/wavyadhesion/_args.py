@@ -4,6 +4,9 @@ shape, and the chunking of vectorised calls."""
 
 from __future__ import annotations
 
+import functools
+import warnings
+
 import numpy as np
 
 from . import _wa_f2py as _f
@@ -202,3 +205,22 @@ def chunk_size_for(chunk_size, executor, seconds_per_point, serial):
 
 # GSL must return error codes, not abort() the Python process.
 _f.fa_init()
+
+
+def renamed_keyword(old: str, new: str):
+    """Decorator: the keyword `old` still accepted for `new` for one release, with a
+    DeprecationWarning (giving both is an error naming them)."""
+    def decorate(func):
+        @functools.wraps(func)
+        def wrapper(*args, **kwargs):
+            if old in kwargs:
+                if new in kwargs:
+                    raise InvalidTypeError(f"{func.__name__}() got both {new!r} and its old "
+                                           f"name {old!r}: give {new!r} only", INVALID_ARGUMENT)
+                warnings.warn(f"{func.__name__}(): the keyword {old!r} is deprecated, use "
+                              f"{new!r} (the old name goes in the next release)",
+                              DeprecationWarning, stacklevel=2)
+                kwargs[new] = kwargs.pop(old)
+            return func(*args, **kwargs)
+        return wrapper
+    return decorate

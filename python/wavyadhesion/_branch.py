@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import List, NamedTuple
 
 import numpy as np
 
 from . import _wa_f2py as _f
 from ._args import grown, model_code, model_name, real_scalar
+from ._results import ResultMixin
 
 # Points asked for in a first trace_branch() call. Branches have a few hundred points
 # (at most 1320 over DW and MD, alpha 0.1-3, mu 0.01-30); a longer one (the library
@@ -56,8 +57,8 @@ class BranchEvent(NamedTuple):
     zone_case: int
 
 
-@dataclass(frozen=True, eq=False)
-class Branch:
+@dataclass(frozen=True, eq=False, repr=False)
+class Branch(ResultMixin):
     """An equilibrium branch traced by :func:`trace_branch` (points in the order of the
     curve, from a* -> 0 to a* = 1/2; not necessarily monotone in a*).
 
@@ -98,11 +99,25 @@ class Branch:
     extremum: np.ndarray
     gbar: np.ndarray
 
+    _columns = ("a_star", "c_star", "P_star", "b_star", "zone_case", "stable", "event",
+                "extremum", "gbar")
+    _repr_fields = ("model", "alpha", "mu", "points", "folds_P")
+
+    @property
+    def points(self) -> int:
+        """The number of points (``len(branch)``)."""
+        return len(self)
+
+    @property
+    def folds_P(self) -> np.ndarray:
+        """P* at the folds, in order (the critical values of the branch)."""
+        return np.array([e.P_star for e in self.folds])
+
     def __len__(self) -> int:
         return int(self.a_star.size)
 
     @property
-    def events(self) -> list:
+    def events(self) -> List[BranchEvent]:
         """Every point with an event, in order, as :class:`BranchEvent`."""
         return [
             BranchEvent(int(i), EVENTS[int(self.event[i])], float(self.a_star[i]),
@@ -111,17 +126,17 @@ class Branch:
         ]
 
     @property
-    def folds(self) -> list:
+    def folds(self) -> List[BranchEvent]:
         """The folds (dP*/da* = 0), in order along the curve."""
         return [e for e in self.events if e.kind == "fold"]
 
     @property
-    def switches(self) -> list:
+    def switches(self) -> List[BranchEvent]:
         """The zone-case switches (c* reaching or leaving 1/2)."""
         return [e for e in self.events if e.kind == "switch"]
 
 
-def trace_branch(model, alpha, mu) -> Branch:
+def trace_branch(model: str, alpha: float, mu: float) -> Branch:
     """The equilibrium branch P*(a*), c*(a*) over 0 < a* <= 1/2, with its folds and
     zone-case switches.
 

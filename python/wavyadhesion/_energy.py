@@ -4,16 +4,19 @@ on any ``concurrent.futures``-style executor (the adhesion-map figures draw its 
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from concurrent.futures import Executor
+from typing import Any, Callable, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (ALPHA_MAX, ALPHA_MIN, MU_MAX, MU_MIN, PATH_CAPACITY, at_index, chunk_size_for,
-                    flat_f64, float_array, model_code, shaped)
+                    flat_f64, float_array, model_code, model_name, shaped)
 from ._errors import (CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError,
                       message_text, raise_status)
-from ._parallel import iter_chunks
+from ._parallel import iter_chunks, make_progress
+from ._results import ResultMixin
 
 __all__ = ["EnergyLost", "energy_lost"]
 
@@ -44,6 +47,16 @@ class EnergyLost(NamedTuple):
     #: alpha and mu, broadcast to that shape (the coordinates of a grid)
     alpha: np.ndarray
     mu: np.ndarray
+    #: the model name
+    model: Optional[str] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("alpha", "mu", "W_star", "W_fraction", "status")
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "W_star", "W_fraction")
 
     @property
     def ok(self) -> np.ndarray:
@@ -75,8 +88,9 @@ def _energy_task(task):
     return w, wf, status, messages
 
 
-def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
-                chunk_size=None) -> EnergyLost:
+def energy_lost(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
+                executor: Optional[Executor] = None, chunk_size: Optional[int] = None,
+                progress: Union[bool, Callable[[int, int], Any], None] = None) -> EnergyLost:
     """Energy lost per approach-retraction cycle under gap control, W*, and its fraction of
     the work of adhesion W*/(pi alpha^2/2), at every point of the broadcast of `alpha` and
     `mu`: the ``W_star`` and ``W_fraction`` of :func:`~wavyadhesion.gap_path`, point by
@@ -107,12 +121,17 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
         (threads), 50 ms (processes, MPI) or 200 ms (dask) of the cheapest cycles. A task
         takes every n-th point (n the number of tasks), so that the cheap and the costly
         cycles (small and large mu) are spread over the tasks evenly.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)`` (points) after each chunk, in
+        order (on an executor: as the tasks come back). None (default): nothing.
 
     Returns
     -------
     EnergyLost
         ``W_star``, ``W_fraction``, ``status``, ``messages`` (index tuple -> message),
-        and ``alpha``, ``mu`` broadcast to the same shape.
+        ``alpha``, ``mu`` broadcast to the same shape, and ``model``. ``to_si(params)``
+        gives W in J/m^2.
 
     Raises
     ------
@@ -160,8 +179,22 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
     wf = np.full(mu_f.size, np.nan)
     status = np.zeros(mu_f.size, dtype=np.int32)
     messages = {}
-    for idx, (tw, twf, tstatus, tmessages) in zip(picks,
-                                                  iter_chunks(_energy_task, tasks, executor)):
+    report = make_progress(progress, mu_f.size, "energy_lost")
+    try:
+        _collect(picks, iter_chunks(_energy_task, tasks, executor), w, wf, status, messages,
+                 errors, shape, alpha_f, mu_f, report)
+    finally:
+        if report is not None:
+            report.close()
+    return EnergyLost(shaped(w, shape), shaped(wf, shape), shaped(status, shape),
+                      dict(sorted(messages.items())), shaped(alpha_f.copy(), shape),
+                      shaped(mu_f.copy(), shape), model_name(code))
+
+
+def _collect(picks, results, w, wf, status, messages, errors, shape, alpha_f, mu_f, report):
+    """Put each task's results in place (in task order); errors="raise" raises at the
+    first failed point met."""
+    for idx, (tw, twf, tstatus, tmessages) in zip(picks, results):
         w[idx], wf[idx], status[idx] = tw, twf, tstatus
         for k, text in sorted(tmessages.items()):
             i = int(idx[k])
@@ -169,8 +202,7 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
             if errors == "raise":
                 where = at_index(i + 1, shape)
                 raise_status(int(tstatus[k]), text, f"{where + ', ' if where else ''}"
-                       f"alpha = {float(alpha_f[i])!r}, mu = {float(mu_f[i])!r}")
+                             f"alpha = {float(alpha_f[i])!r}, mu = {float(mu_f[i])!r}")
             messages[key] = text
-    return EnergyLost(shaped(w, shape), shaped(wf, shape), shaped(status, shape),
-                      dict(sorted(messages.items())), shaped(alpha_f.copy(), shape),
-                      shaped(mu_f.copy(), shape))
+        if report is not None:
+            report.update(idx.size)

@@ -3,14 +3,17 @@ principal state (vectorised) and every state at one point."""
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+from typing import List, NamedTuple, Optional
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (at_index, chunk_slices, flat_f64, float_array, grown, model_code,
-                    shaped)
+                    model_name, renamed_keyword, shaped)
 from ._errors import InvalidArgumentError, raise_status
+from ._results import ResultMixin, TupleCompat
 
 # States asked for in a first roots() call; more are fetched in a second call.
 _ROOTS_CAPACITY = 16
@@ -23,8 +26,11 @@ _ROOTS_CAPACITY = 16
 _CHUNK_POINTS = 4096
 
 
-class Equilibrium(NamedTuple):
-    """Principal equilibrium states (numpy arrays of the broadcast shape).
+@dataclass(frozen=True, repr=False)
+class Equilibrium(TupleCompat, ResultMixin):
+    """Principal equilibrium states (numpy arrays of the broadcast shape). Unpacks as
+    ``c_star, P_star, zone_case, gbar`` (it was a named tuple of these four); has
+    ``to_si(params)``, ``to_dataframe()`` and a short repr.
 
     Attributes
     ----------
@@ -38,12 +44,25 @@ class Equilibrium(NamedTuple):
         Mean gap gbar* = gbar/Delta (mean of the gap h over one period): 0 in full
         contact, 1 for the undeformed wave touching at its crest. NaN where a point
         failed (errors="nan") or the mean gap is not defined (DW at a* = 0).
+    a_star, alpha, mu : numpy.ndarray of float
+        The coordinates: the inputs broadcast to the same shape.
+    model : str
+        The model name.
     """
 
     c_star: np.ndarray
     P_star: np.ndarray
     zone_case: np.ndarray
     gbar: np.ndarray
+    a_star: Optional[np.ndarray] = None
+    alpha: Optional[np.ndarray] = None
+    mu: Optional[np.ndarray] = None
+    model: Optional[str] = None
+
+    _tuple_fields = ("c_star", "P_star", "zone_case", "gbar")
+    _columns = ("a_star", "alpha", "mu", "c_star", "P_star", "zone_case", "gbar")
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "a_star", "P_star")
 
 
 class State(NamedTuple):
@@ -73,18 +92,20 @@ class State(NamedTuple):
     gbar: float
 
 
-def westergaard_load(a):
+@renamed_keyword("a", "a_star")
+def westergaard_load(a_star: ArrayLike) -> np.ndarray:
     """Westergaard load P* = sin^2(pi a*) (no adhesion).
 
     Parameters
     ----------
-    a : array_like
-        Contact half-width over the period, a* in [0, 1/2].
+    a_star : array_like
+        Contact half-width over the period, a* in [0, 1/2] (the keyword ``a`` is
+        deprecated).
 
     Returns
     -------
     numpy.ndarray or numpy.float64
-        P*, same shape as `a`.
+        P*, same shape as `a_star`.
 
     Raises
     ------
@@ -96,7 +117,7 @@ def westergaard_load(a):
     >>> westergaard_load([0.0, 0.25, 0.5]).round(12)
     array([0. , 0.5, 1. ])
     """
-    a = float_array(a, "a")
+    a = float_array(a_star, "a_star")
     if a.size == 0:
         return np.empty(a.shape)
     a_f = flat_f64(a)
@@ -113,15 +134,17 @@ def westergaard_load(a):
     return shaped(p, a.shape)
 
 
-def jkr_load(alpha, a):
+@renamed_keyword("a", "a_star")
+def jkr_load(alpha: ArrayLike, a_star: ArrayLike) -> np.ndarray:
     """JKR load of the wavy surface (Johnson 1995), P* = sin^2(pi a*) - alpha sqrt(tan(pi a*)).
 
     Parameters
     ----------
     alpha : array_like
         Johnson's parameter, alpha >= 0.
-    a : array_like
-        Contact half-width over the period, a* in [0, 1/2]; broadcast with `alpha`.
+    a_star : array_like
+        Contact half-width over the period, a* in [0, 1/2]; broadcast with `alpha` (the
+        keyword ``a`` is deprecated).
 
     Returns
     -------
@@ -134,7 +157,7 @@ def jkr_load(alpha, a):
         If any alpha < 0 or a* outside [0, 1/2], or either is NaN.
     """
     alpha = float_array(alpha, "alpha")
-    a = float_array(a, "a")
+    a = float_array(a_star, "a_star")
     alpha_b, a_b = np.broadcast_arrays(alpha, a)
     if a_b.size == 0:
         return np.empty(a_b.shape)
@@ -152,7 +175,9 @@ def jkr_load(alpha, a):
     return shaped(p, a_b.shape)
 
 
-def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
+@renamed_keyword("a", "a_star")
+def equilibrium(model: str, alpha: ArrayLike, mu: ArrayLike, a_star: ArrayLike, *,
+                errors: str = "raise") -> Equilibrium:
     """Principal equilibrium state at given contact half-widths.
 
     For "dw" and "md" the principal state is the case-1 state (a* < c* < 1/2) with the
@@ -167,8 +192,9 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
         Johnson's parameter, alpha > 0.
     mu : array_like
         Transition parameter, mu >= 0 (mu = 0 is Westergaard; large mu tends to JKR).
-    a : array_like
-        Contact half-width over the period, a* in [0, 1/2].
+    a_star : array_like
+        Contact half-width over the period, a* in [0, 1/2] (the keyword ``a`` is
+        deprecated).
     errors : {"raise", "nan"}, optional
         "raise" (default): raise on the first point that fails. "nan": return NaN
         (zone case 0) at failed points and raise nothing.
@@ -176,8 +202,9 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
     Returns
     -------
     Equilibrium
-        Named tuple ``(c_star, P_star, zone_case, gbar)`` of arrays of the broadcast shape of
-        `alpha`, `mu` and `a` (numpy scalars when all three are scalars).
+        ``c_star, P_star, zone_case, gbar`` (it unpacks as these four) and the
+        coordinates ``a_star, alpha, mu``: arrays of the broadcast shape of `alpha`, `mu`
+        and `a_star` (numpy scalars when all three are scalars).
 
     Raises
     ------
@@ -196,19 +223,22 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'", 1)
     alpha_b, mu_b, a_b = np.broadcast_arrays(
-        float_array(alpha, "alpha"), float_array(mu, "mu"), float_array(a, "a")
+        float_array(alpha, "alpha"), float_array(mu, "mu"), float_array(a_star, "a_star")
     )
     shape = a_b.shape
     if a_b.size == 0:
         return Equilibrium(np.empty(shape), np.empty(shape), np.empty(shape, np.int32),
-                           np.empty(shape))
+                           np.empty(shape), np.empty(shape), np.empty(shape),
+                           np.empty(shape), model_name(code))
     alpha_f, mu_f, a_f = flat_f64(alpha_b), flat_f64(mu_b), flat_f64(a_b)
+    coords = (shaped(a_f.copy(), shape), shaped(alpha_f.copy(), shape),
+              shaped(mu_f.copy(), shape), model_name(code))
     if a_f.size <= _CHUNK_POINTS:
         c, p, z, g, nfail, ifail, status, message = _f.fa_equilibrium(code, alpha_f, mu_f, a_f)
         if nfail and errors == "raise":
             raise_status(status, message, at_index(ifail, shape))
         return Equilibrium(shaped(c, shape), shaped(p, shape), shaped(z, shape),
-                           shaped(g, shape))
+                           shaped(g, shape), *coords)
     c = np.empty(a_f.size)
     p = np.empty(a_f.size)
     z = np.empty(a_f.size, dtype=np.int32)
@@ -219,10 +249,10 @@ def equilibrium(model, alpha, mu, a, *, errors: str = "raise") -> Equilibrium:
         if nfail and errors == "raise":
             raise_status(status, message, at_index(sl.start + ifail, shape))
     return Equilibrium(shaped(c, shape), shaped(p, shape), shaped(z, shape),
-                       shaped(g, shape))
+                       shaped(g, shape), *coords)
 
 
-def roots(model, alpha, mu, a_star) -> list:
+def roots(model: str, alpha: float, mu: float, a_star: float) -> List[State]:
     """Every equilibrium state at one point (alpha, mu, a*).
 
     Parameters

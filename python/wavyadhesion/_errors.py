@@ -43,10 +43,11 @@ class InvalidTypeError(InvalidArgumentError, TypeError):
     masked values): also a TypeError, and an InvalidArgumentError (status 1)."""
 
 
-class ConvergenceError(WavyAdhesionError):
+class ConvergenceError(WavyAdhesionError, RuntimeError):
     """A numerical failure: an iteration did not converge (status 3), a numerical
     building block failed (status 5), or no solution was found (status 2, see
-    :class:`NoSolutionError`)."""
+    :class:`NoSolutionError`). Also a RuntimeError (as scipy's convergence errors
+    are)."""
 
 
 class NoSolutionError(ConvergenceError):

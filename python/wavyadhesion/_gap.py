@@ -3,13 +3,15 @@ gap law P*(gbar*) (:func:`gap_law`)."""
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import List, NamedTuple, Optional, Tuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (PATH_CAPACITY, chunk_slices, float_array, grown, index_text, model_code,
-                    real_scalar)
+                    model_name, real_scalar)
+from ._results import ResultMixin
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status
 
 # gap_law: each call walks the cycle again (~1-2 ms), then ~3 us per mean gap (MD), so
@@ -48,9 +50,20 @@ class GapLaw(NamedTuple):
     W_star: float
     #: W*/(pi alpha^2/2), the fraction of the work of adhesion lost per cycle
     W_fraction: float
+    model: Optional[str] = None
+    alpha: Optional[float] = None
+    mu: Optional[float] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("gbar", "P_approach", "P_retract", "dPdg_approach", "dPdg_retract")
+    _coordinates = ("model", "alpha", "mu", "W_star", "W_fraction")
+    _repr_fields = ("model", "alpha", "mu", "gbar", "W_star", "W_fraction")
 
 
-def gap_law(model, alpha, mu, gbar) -> GapLaw:
+def gap_law(model: str, alpha: float, mu: float, gbar: ArrayLike) -> GapLaw:
     """The gap law: P* on approach and on retraction, and their slopes dP*/dgbar*, at
     the mean gaps ``gbar`` (>= 0), with the energy lost per cycle W*.
 
@@ -66,7 +79,9 @@ def gap_law(model, alpha, mu, gbar) -> GapLaw:
     Returns
     -------
     GapLaw
-        Arrays of the shape of ``gbar`` and the floats ``W_star``, ``W_fraction``.
+        Arrays of the shape of ``gbar`` and the floats ``W_star``, ``W_fraction``;
+        ``model``, ``alpha``, ``mu``. ``to_si(params)`` gives gbar in m, loads in Pa and
+        N/m, the slopes in Pa/m and W in J/m^2.
 
     Raises
     ------
@@ -107,7 +122,7 @@ def gap_law(model, alpha, mu, gbar) -> GapLaw:
             out[sl] = v
     pa, pr, da, dr = outputs
     return GapLaw(g.copy(), pa.reshape(shape), pr.reshape(shape), da.reshape(shape),
-                  dr.reshape(shape), float(w), float(wf))
+                  dr.reshape(shape), float(w), float(wf), model_name(code), alpha, mu)
 
 
 class GapPath(NamedTuple):
@@ -130,15 +145,31 @@ class GapPath(NamedTuple):
     W_fraction: float
     #: gbar* where the surfaces first interact on approach
     g_touch: float
+    model: Optional[str] = None
+    alpha: Optional[float] = None
+    mu: Optional[float] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("stage", "event", "zone_case", "a_star", "c_star", "P_star", "gbar")
+    _coordinates = ("model", "alpha", "mu", "W_star", "W_fraction", "g_touch")
+    _repr_fields = ("model", "alpha", "mu", "events_n", "W_star", "W_fraction", "g_touch")
 
     @property
-    def events(self):
+    def events_n(self) -> int:
+        """The number of events."""
+        return int(np.size(self.event))
+
+    @property
+    def events(self) -> List[Tuple[str, str, float, float]]:
         """The events as (stage name, event name, gbar*, P*) tuples."""
         return [(GAP_STAGES[int(s)], GAP_EVENTS.get(int(e), str(int(e))), float(g), float(p))
                 for s, e, g, p in zip(self.stage, self.event, self.gbar, self.P_star)]
 
 
-def gap_path(model, alpha, mu) -> GapPath:
+def gap_path(model: str, alpha: float, mu: float) -> GapPath:
     """Approach from far apart to full contact and retraction under gap control, with
     the energy lost per cycle: the events (first interaction, jumps at constant gbar*,
     contact made or lost, full contact reached or left, interaction lost) with their
@@ -154,6 +185,9 @@ def gap_path(model, alpha, mu) -> GapPath:
     Returns
     -------
     GapPath
+        The events (``stage, event, zone_case, a_star, c_star, P_star, gbar``, one
+        element each), ``W_star``, ``W_fraction``, ``g_touch`` and ``model``, ``alpha``,
+        ``mu``.
 
     Raises
     ------
@@ -175,4 +209,5 @@ def gap_path(model, alpha, mu) -> GapPath:
     stage, ev, zone, a, c, p, g, n, w, wf, gt, _, _ = out
     n = int(n)
     return GapPath(stage[:n].copy(), ev[:n].copy(), zone[:n].copy(), a[:n].copy(),
-                   c[:n].copy(), p[:n].copy(), g[:n].copy(), float(w), float(wf), float(gt))
+                   c[:n].copy(), p[:n].copy(), g[:n].copy(), float(w), float(wf), float(gt),
+                   model_name(code), alpha, mu)

@@ -4,14 +4,17 @@ control."""
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, Callable, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (ALPHA_MAX, ALPHA_MIN, MU_MAX, MU_MIN, at_index, check_sweep_arguments,
-                    chunk_slices, flat_f64, float_array, model_code, shaped)
+                    chunk_slices, flat_f64, float_array, model_code, model_name, shaped)
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, message_text, raise_status
+from ._parallel import make_progress
+from ._results import ResultMixin
 
 # mu per facade call (one alpha): Ctrl-C is seen between two calls (~0.3 s for MD)
 _CHUNK_SWEEP = 16
@@ -50,6 +53,18 @@ class GapCritical(NamedTuple):
     status: np.ndarray
     #: index (into the flattened points) -> message, for each failed point
     messages: dict
+    #: alpha and mu broadcast to the shape of the values (the coordinates), the model
+    alpha: Optional[np.ndarray] = None
+    mu: Optional[np.ndarray] = None
+    model: Optional[str] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("alpha", "mu") + GAP_CRITICAL_FIELDS + ("status",)
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "g_touch", "P_min")
 
 
 def _gap_chunk(code, alpha, mu_f, idx, values, status_out, messages, errors, shape):
@@ -81,7 +96,9 @@ def _gap_chunk(code, alpha, mu_f, idx, values, status_out, messages, errors, sha
         messages[i] = text
 
 
-def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
+def gap_critical(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
+                 progress: Union[bool, Callable[[int, int], Any], None] = None
+                 ) -> GapCritical:
     """Critical values under gap (mean-gap) control, vectorised over mu and broadcast
     with alpha: where the approach first feels the surface and jumps in (a jump under gap
     control keeps gbar*), where contact is made, the most tensile load on the retraction
@@ -101,12 +118,16 @@ def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
         "raise" (default): raise at the first point that fails (an invalid alpha or mu
         before any work). "nan": every point is computed; a failed or invalid one gets
         NaN values and its status and message.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)`` (points) after each chunk, in
+        order. None (default): nothing.
 
     Returns
     -------
     GapCritical
-        The ten values (fields named as in GAP_CRITICAL_FIELDS), ``status`` and
-        ``messages``.
+        The ten values (fields named as in GAP_CRITICAL_FIELDS), ``status``,
+        ``messages`` and the coordinates ``alpha``, ``mu`` (broadcast), ``model``.
 
     Raises
     ------
@@ -147,10 +168,21 @@ def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
     uniq, inverse = np.unique(alpha_f[~bad], return_inverse=True)
     inverse = inverse.reshape(-1)
     good = np.flatnonzero(~bad)
-    for k, value in enumerate(uniq):
-        group = good[inverse == k]
-        for sl in chunk_slices(group.size, _CHUNK_SWEEP):    # Ctrl-C is seen between chunks
-            _gap_chunk(code, float(value), mu_f, group[sl], values, status_out, messages,
-                       errors, shape)
+    report = make_progress(progress, mu_f.size, "gap_critical")
+    try:
+        if report is not None:
+            report.update(int(bad.sum()))
+        for k, value in enumerate(uniq):
+            group = good[inverse == k]
+            for sl in chunk_slices(group.size, _CHUNK_SWEEP):  # Ctrl-C is seen between chunks
+                _gap_chunk(code, float(value), mu_f, group[sl], values, status_out,
+                           messages, errors, shape)
+                if report is not None:
+                    report.update(sl.stop - sl.start)
+    finally:
+        if report is not None:
+            report.close()
     fields = [shaped(values[k], shape) for k in range(len(GAP_CRITICAL_FIELDS))]
-    return GapCritical(*fields, shaped(status_out, shape), messages)
+    return GapCritical(*fields, shaped(status_out, shape), messages,
+                       shaped(alpha_f.copy(), shape), shaped(mu_f.copy(), shape),
+                       model_name(code))

@@ -4,16 +4,19 @@ critical forces over many (alpha, mu) (:func:`critical_forces`)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
+from concurrent.futures import Executor
+from typing import Any, Callable, Dict, List, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (PATH_CAPACITY, at_index, check_sweep_arguments, chunk_size_for, flat_f64,
                     float_array, grown, model_code, model_name, real_scalar, shaped)
 from ._branch import EVENTS
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status, message_text
-from ._parallel import iter_chunks
+from ._parallel import iter_chunks, make_progress
+from ._results import ResultMixin
 
 _CHUNK_SWEEP = 16
 
@@ -51,8 +54,8 @@ class PathEvent(NamedTuple):
     P_star: float
 
 
-@dataclass(frozen=True, eq=False)
-class LoadPath:
+@dataclass(frozen=True, eq=False, repr=False)
+class LoadPath(ResultMixin):
     """Load-controlled loading from separation at P* = 0 to full contact, then unloading
     to pull-off, as :func:`load_path` returns it.
 
@@ -101,16 +104,26 @@ class LoadPath:
     loop_area: float
     jump_energy: np.ndarray
 
+    _columns = ("stage", "event", "a_star", "c_star", "P_star", "jump_energy")
+    _coordinates = ("model", "alpha", "mu", "P_fc", "P_pf", "loop_area")
+    _repr_fields = ("model", "alpha", "mu", "events_n", "P_fc", "P_pf", "fc_mechanism",
+                    "pf_mechanism")
+
+    @property
+    def events_n(self) -> int:
+        """The number of events (``len(path)``)."""
+        return len(self)
+
     def __len__(self) -> int:
         return int(self.event.size)
 
     @property
-    def mechanisms(self) -> dict:
+    def mechanisms(self) -> Dict[str, str]:
         """``{"full_contact": fc_mechanism, "pull_off": pf_mechanism}``."""
         return {"full_contact": self.fc_mechanism, "pull_off": self.pf_mechanism}
 
     @property
-    def events(self) -> list:
+    def events(self) -> List[PathEvent]:
         """The events in order, as :class:`PathEvent`."""
         return [
             PathEvent(STAGES[int(st)], EVENTS[int(ev)], float(a), float(c), float(p))
@@ -119,8 +132,8 @@ class LoadPath:
         ]
 
 
-@dataclass(frozen=True, eq=False)
-class CriticalForces:
+@dataclass(frozen=True, eq=False, repr=False)
+class CriticalForces(ResultMixin):
     """Critical forces of :func:`critical_forces`; unpacks as ``P_fc, P_pf``.
 
     Attributes
@@ -139,6 +152,10 @@ class CriticalForces:
     messages : dict
         The library's message for each failed point, keyed by its index tuple (``()``
         for scalar inputs); empty when every point succeeded.
+    alpha, mu : numpy.ndarray of float
+        The coordinates: the inputs broadcast to the same shape.
+    model : str
+        The model name.
     """
 
     P_fc: np.ndarray
@@ -147,6 +164,13 @@ class CriticalForces:
     pf_mechanism: np.ndarray
     status: np.ndarray = None
     messages: dict = field(default_factory=dict)
+    alpha: Optional[np.ndarray] = None
+    mu: Optional[np.ndarray] = None
+    model: Optional[str] = None
+
+    _columns = ("alpha", "mu", "P_fc", "P_pf", "fc_mechanism", "pf_mechanism", "status")
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "P_fc", "P_pf")
 
     @property
     def ok(self) -> np.ndarray:
@@ -164,7 +188,7 @@ class CriticalForces:
         return (self.P_fc, self.P_pf)[i]
 
 
-def load_path(model, alpha, mu) -> LoadPath:
+def load_path(model: str, alpha: float, mu: float) -> LoadPath:
     """Load-controlled loading and unloading along the branch (MODEL-NOTES.md).
 
     Loading starts from separation at P* = 0 (jump-in), rises along stable pieces and
@@ -217,8 +241,10 @@ def load_path(model, alpha, mu) -> LoadPath:
                     jump_e[:n].copy())
 
 
-def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
-                    chunk_size=None) -> CriticalForces:
+def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
+                    executor: Optional[Executor] = None, chunk_size: Optional[int] = None,
+                    progress: Union[bool, Callable[[int, int], Any], None] = None
+                    ) -> CriticalForces:
     """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
     unloading), vectorised over mu and broadcast with alpha.
 
@@ -249,6 +275,10 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
         Points per chunk (a chunk is one task; each alpha in it one facade call).
         Default: 16 serially; on an executor enough points for 10 ms (threads), 50 ms
         (processes, MPI) or 200 ms (dask) of work, so that scheduling costs < 5 %.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)`` (points) after each chunk, in
+        order (on an executor: as the chunks come back). None (default): nothing.
 
     Returns
     -------
@@ -257,7 +287,8 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
         mechanism codes ``fc_mechanism``, ``pf_mechanism`` and the library status
         ``status`` (0 where the point succeeded), arrays of the broadcast shape (numpy
         scalars when alpha and mu are scalars); ``messages`` maps the index of each failed
-        point to the library's message. JKR: P_pf = -inf.
+        point to the library's message; ``alpha``, ``mu`` broadcast to that shape and
+        ``model``. JKR: P_pf = -inf.
 
     Raises
     ------
@@ -289,21 +320,35 @@ def critical_forces(model, alpha, mu, *, errors: str = "raise", executor=None,
     messages = {}
     size = chunk_size_for(chunk_size, executor, _SWEEP_SECONDS[code], _CHUNK_SWEEP)
     if mu_f.size == 1:
+        report = make_progress(progress, 1, "critical_forces")
         _sweep_chunk(code, float(alpha_f[0]), mu_f, np.zeros(1, dtype=np.intp), out,
                      messages, errors, shape)
+        if report is not None:
+            report.update(1)
+            report.close()
     elif mu_f.size:
         values, inverse = np.unique(alpha_f, return_inverse=True)
         if errors == "raise" and (values.size > 1 or mu_f.size > size):
             check_sweep_arguments(code, alpha_f, mu_f, shape)   # all before any work
         chunks = _sweep_pieces(values, inverse.reshape(-1), size)
         tasks = [(code, [(value, mu_f[idx]) for value, idx in chunk]) for chunk in chunks]
-        # in order; serially Ctrl-C is seen between chunks
-        for chunk, results in zip(chunks, iter_chunks(_sweep_task, tasks, executor)):
-            for (value, idx), result in zip(chunk, results):
-                _sweep_chunk(code, value, mu_f, idx, out, messages, errors, shape, result)
+        report = make_progress(progress, mu_f.size, "critical_forces")
+        try:
+            # in order; serially Ctrl-C is seen between chunks
+            for chunk, results in zip(chunks, iter_chunks(_sweep_task, tasks, executor)):
+                for (value, idx), result in zip(chunk, results):
+                    _sweep_chunk(code, value, mu_f, idx, out, messages, errors, shape,
+                                 result)
+                if report is not None:
+                    report.update(sum(idx.size for _, idx in chunk))
+        finally:
+            if report is not None:
+                report.close()
     p_fc, p_pf, fc_m, pf_m, status = out
     return CriticalForces(shaped(p_fc, shape), shaped(p_pf, shape), shaped(fc_m, shape),
-                          shaped(pf_m, shape), shaped(status, shape), messages)
+                          shaped(pf_m, shape), shaped(status, shape), messages,
+                          shaped(alpha_f.copy(), shape), shaped(mu_f.copy(), shape),
+                          model_name(code))
 
 
 def _sweep_pieces(values, inverse, size):

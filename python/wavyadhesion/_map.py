@@ -3,16 +3,18 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
+from concurrent.futures import Executor
+from typing import Any, Callable, Optional, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import (ALPHA_MAX, ALPHA_MIN, C_INT_MAX, MAP_CELLS_MAX, MAP_N_ALPHA_MAX, MAP_N_MU_MAX,
                     MODELS, MU_MAX, MU_MIN, count_in, float_array, model_code, real_in)
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, InvalidTypeError, raise_status
 from ._loadpath import critical_forces
-from ._parallel import Background, call_interruptibly, run_chunks
+from ._parallel import Background, call_interruptibly, iter_chunks, make_progress, run_chunks
 
 #: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
 _NAMES = ("gradual", "jump case 1", "jump case 2", "snap at P=0")
@@ -93,7 +95,7 @@ class SpecialPoint:
         return f"{first}: the load path fails here"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class AdhesionMap:
     """Boundaries and regions of one model over an (alpha, mu) grid.
 
@@ -126,6 +128,31 @@ class AdhesionMap:
     control: str = "load"
     ga_region: Optional[np.ndarray] = None
     gr_region: Optional[np.ndarray] = None
+
+    def __repr__(self) -> str:
+        return (f"AdhesionMap(model={self.model!r}, control={self.control!r}, "
+                f"alpha={self.alpha.size} in [{self.alpha[0]:.4g}, {self.alpha[-1]:.4g}], "
+                f"mu={self.mu.size} in [{self.mu[0]:.4g}, {self.mu[-1]:.4g}], "
+                f"boundaries={len(self.boundaries)}, special={len(self.special)}, "
+                f"n_paths={self.n_paths}, forces={self.P_fc is not None})")
+
+    def to_dataframe(self):
+        """One row per cell of the (mu, alpha) grid: ``alpha``, ``mu`` and the region
+        codes (and ``P_fc``, ``P_pf``, the masks with ``forces=True``); pandas is imported
+        only here. The boundaries are in ``boundaries``."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("to_dataframe() needs pandas: pip install pandas") from None
+        mu, alpha = np.meshgrid(self.mu, self.alpha, indexing="ij")
+        cols = {"model": np.repeat(self.model, mu.size), "alpha": alpha.reshape(-1),
+                "mu": mu.reshape(-1)}
+        for name in ("fc_region", "pf_region", "ga_region", "gr_region", "P_fc", "P_pf",
+                     "westergaard", "jkr_fc"):
+            value = getattr(self, name)
+            if value is not None:
+                cols[name] = np.asarray(value).reshape(-1)
+        return pd.DataFrame(cols)
 
 
 #: The accepted forms of alpha_range and mu_range, for messages
@@ -191,6 +218,18 @@ def _forces_chunk(args):
             np.asarray(res.pf_mechanism, dtype=np.int32))
 
 
+def _force_grid(model, alpha, mu, executor, report):
+    """The critical forces of every alpha column over the mu grid (one chunk each, in
+    order), reporting each column as it comes back."""
+    parts = []
+    for part in iter_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
+                            executor):
+        parts.append(part)
+        if report is not None:
+            report.update(1)
+    return parts
+
+
 def _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo, tol=1e-9):
     """Bisect ln alpha at fixed mu to where the mechanism `which` leaves m_lo."""
     lo, hi = np.log(a_lo), np.log(a_hi)
@@ -244,9 +283,14 @@ def _vertical_boundaries(model, alpha, mu, regions, executor, tol=1e-9):
     return out
 
 
-def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60), *,
-                 forces: bool = False, scan_every: int = 20, executor=None,
-                 alpha_tol: float = 1e-9, control: str = "load") -> AdhesionMap:
+def adhesion_map(model: str, alpha_range: Union[Tuple[float, float, int], ArrayLike] = (
+                     0.01, 10.0, 200),
+                 mu_range: Tuple[float, float, int] = (1e-3, 1e3, 60), *,
+                 forces: bool = False, scan_every: int = 20,
+                 executor: Optional[Executor] = None, alpha_tol: float = 1e-9,
+                 control: str = "load",
+                 progress: Union[bool, Callable[[int, int], Any], None] = None
+                 ) -> AdhesionMap:
     """The adhesion map of the (alpha, mu) plane for "dw" or "md".
 
     Parameters
@@ -282,6 +326,12 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         Which boundaries: load control (codes 1xx, 2xx; default), gap control (3xx
         approach, 4xx retraction: doc/theory.md, "Adhesion map") or both. Gap control
         costs about as much again as load control for DW, 5-10 times more for MD.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)``. The boundaries are one Fortran
+        call that reports nothing while it runs: it counts as one step, reported when it
+        ends; with ``forces=True`` each alpha column of the force grid is one more step,
+        reported as it comes back (the bisections in alpha are done before the last).
 
     Returns
     -------
@@ -320,6 +370,18 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
             INVALID_ARGUMENT)
     capacity = 64 * (alpha.size + 64)
     args = (n_mu, capacity, code, alpha, mu_lo, mu_hi, every, CONTROLS[control])
+    report = make_progress(progress, 1 + (alpha.size if forces else 0), "adhesion_map")
+    try:
+        return _compute_map(model, code, alpha, mu_lo, mu_hi, n_mu, args, forces, executor,
+                            alpha_tol, control, report)
+    finally:
+        if report is not None:
+            report.close()
+
+
+def _compute_map(model, code, alpha, mu_lo, mu_hi, n_mu, args, forces, executor, alpha_tol,
+                 control, report):
+    """adhesion_map's work once its arguments are checked (`report`: a Progress or None)."""
     pending = None
     if forces and executor is not None:
         # the force grid on the executor while a helper thread continues the boundaries
@@ -327,11 +389,12 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         mu_guess = np.exp(np.log(mu_lo) + (np.log(mu_hi) - np.log(mu_lo))
                           * np.arange(n_mu) / (n_mu - 1))
         call = Background(_f.fa_adhesion_map, *args)
-        pending = (mu_guess, run_chunks(
-            _forces_chunk, [(str(model), float(a), mu_guess) for a in alpha], executor))
+        pending = (mu_guess, _force_grid(model, alpha, mu_guess, executor, report))
         out = call.result()
     else:
         out = call_interruptibly(_f.fa_adhesion_map, *args)   # Ctrl-C within 0.1 s
+    if report is not None:
+        report.update(1)
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, ga, gr, n_paths, status,
      message, sp_kind, sp_codes, sp_point, n_special) = out
     if status != OK:
@@ -359,8 +422,8 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         if pending is not None and np.array_equal(pending[0], mu):
             parts = pending[1]
         else:
-            parts = run_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
-                               executor)
+            # (on an executor whose guessed grid missed: computed again, not counted again)
+            parts = _force_grid(model, alpha, mu, executor, report if pending is None else None)
         p_fc = np.stack([p[0] for p in parts], axis=1)
         p_pf = np.stack([p[1] for p in parts], axis=1)
         # every cell computed: the exact region grid replaces the one filled from curves

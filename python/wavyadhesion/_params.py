@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -12,7 +13,8 @@ from ._errors import OK, InvalidArgumentError, raise_status
 
 @dataclass(frozen=True)
 class Scales:
-    """SI scales that turn dimensionless results back into physical ones.
+    """SI scales that turn dimensionless results back into physical ones (a result's
+    ``to_si(params)`` uses them).
 
     Attributes
     ----------
@@ -23,9 +25,16 @@ class Scales:
     force : float
         p* L [N/m]: force per period and unit depth = P* * force.
     length : float
-        Period L [m]: a = a* L, c = c* L.
+        Period L [m]: a = a* L, c = c* L, x = x* L.
     radius : float
         Crest radius R = L^2 / (4 pi^2 Delta) [m].
+    amplitude : float
+        Amplitude Delta [m]: mean gap = gbar* * amplitude, gap = h* * amplitude.
+        Optional for backward compatibility: given 5 values, it is p* L / (pi E*).
+    energy : float
+        p* Delta [J/m^2] (a property): energy lost per cycle and unit area = W* * energy.
+    stiffness : float
+        p* / Delta [Pa/m] (a property): dP/dgbar = dP*/dgbar* * stiffness.
     """
 
     estar: float
@@ -33,6 +42,22 @@ class Scales:
     force: float
     length: float
     radius: float
+    amplitude: Optional[float] = None
+
+    def __post_init__(self):
+        if self.amplitude is None:
+            object.__setattr__(self, "amplitude",
+                               self.pressure * self.length / (math.pi * self.estar))
+
+    @property
+    def energy(self) -> float:
+        """p* Delta [J/m^2], the unit of W* and of the jump energies."""
+        return self.pressure * self.amplitude
+
+    @property
+    def stiffness(self) -> float:
+        """p* / Delta [Pa/m], the unit of dP*/dgbar*."""
+        return self.pressure / self.amplitude
 
 
 @dataclass(frozen=True)
@@ -84,15 +109,15 @@ class Params:
     def from_dimensional(
         cls,
         *,
-        E1=None,
-        nu1=None,
-        E2=None,
-        nu2=None,
-        Estar=None,
-        period,
-        amplitude,
-        work_of_adhesion,
-        peak_stress,
+        E1: Optional[float] = None,
+        nu1: Optional[float] = None,
+        E2: Optional[float] = None,
+        nu2: Optional[float] = None,
+        Estar: Optional[float] = None,
+        period: float,
+        amplitude: float,
+        work_of_adhesion: float,
+        peak_stress: float,
     ) -> "Params":
         """Parameters and SI scales from physical inputs (SI units).
 
@@ -158,7 +183,7 @@ class Params:
         if status != OK:
             raise_status(status, message)
         scales = Scales(float(estar), float(pressure), float(force), float(length),
-                        float(radius))
+                        float(radius), real_scalar(amplitude, "amplitude"))
         return cls(float(alpha), float(mu), scales)
 
     def __repr__(self) -> str:

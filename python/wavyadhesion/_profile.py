@@ -2,21 +2,26 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
-from ._args import at_index, chunk_slices, flat_f64, float_array, model_code, real_scalar
+from ._args import (at_index, chunk_slices, flat_f64, float_array, model_code, model_name,
+                    real_scalar)
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status
+from ._results import ResultMixin, TupleCompat
 
 # Points per facade call (Ctrl-C is seen between two calls).
 _CHUNK_POINTS = 4096
 
 
-class Profile(NamedTuple):
+@dataclass(frozen=True, eq=False, repr=False)
+class Profile(TupleCompat, ResultMixin):
     """Traction and gap profiles of one state (:func:`profile`); unpacks as
-    ``x, traction, gap``.
+    ``x, traction, gap`` (it was a named tuple of these three).
 
     Attributes
     ----------
@@ -27,18 +32,39 @@ class Profile(NamedTuple):
         at the contact edges |x*| = a*.
     gap : numpy.ndarray of float
         h(x)/Delta >= 0 (0 on the contact; its mean over a period is gbar*).
+    model : str
+    alpha, mu, a_star : float
+        The inputs.
+    c_star, P_star, gbar : float
+        The state drawn: its interaction-zone half-width, load and mean gap.
+    zone_case : int
+        Its zone case.
     """
 
     x: np.ndarray
     traction: np.ndarray
     gap: np.ndarray
+    model: Optional[str] = None
+    alpha: Optional[float] = None
+    mu: Optional[float] = None
+    a_star: Optional[float] = None
+    c_star: Optional[float] = None
+    P_star: Optional[float] = None
+    zone_case: Optional[int] = None
+    gbar: Optional[float] = None
+
+    _tuple_fields = ("x", "traction", "gap")
+    _columns = ("x", "traction", "gap")
+    _coordinates = ("model", "alpha", "mu", "a_star", "c_star", "P_star", "zone_case", "gbar")
+    _repr_fields = ("model", "alpha", "mu", "a_star", "c_star", "P_star", "x")
 
 
 #: Points of profile()'s default grid of x* over [-1/2, 1/2].
 _PROFILE_POINTS = 401
 
 
-def profile(model, alpha, mu, a_star, c_star=None, x=None) -> Profile:
+def profile(model: str, alpha: float, mu: float, a_star: float,
+            c_star: Optional[float] = None, x: Optional[ArrayLike] = None) -> Profile:
     """Traction p(x)/p* and gap h(x)/Delta of one equilibrium state.
 
     The state is the one at `a_star` whose c* is nearest `c_star` among :func:`roots`
@@ -109,9 +135,11 @@ def profile(model, alpha, mu, a_star, c_star=None, x=None) -> Profile:
     chunks = list(chunk_slices(x_f.size, _CHUNK_POINTS)) or [slice(0, 0)]
     for sl in chunks:                                 # Ctrl-C is seen between chunks
         out = _f.fa_profile(code, alpha, mu, a_star, c_value, int(principal), x_f[sl])
-        t[sl], h[sl], _, _, _, _, status, message = out
+        t[sl], h[sl], sc, sp, sz, sg, status, message = out
         if status != OK:
             raise_status(status, message)
-    return Profile(x_f.reshape(shape).copy(), t.reshape(shape), h.reshape(shape))
+    return Profile(x_f.reshape(shape).copy(), t.reshape(shape), h.reshape(shape),
+                   model_name(code), alpha, mu, a_star, float(sc), float(sp), int(sz),
+                   float(sg))
 
 

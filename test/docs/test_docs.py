@@ -62,6 +62,13 @@ def critical(model, alpha, mu):
     return float(fields[-2]), float(fields[-1])
 
 
+def python_value(expression):
+    """str() of a Python expression over the installed package (``wa``), as a docs
+    quote of the Python interface (the package is imported only when a claim needs it)."""
+    import wavyadhesion as wa
+    return str(eval(expression, {"wa": wa}))
+
+
 def fmt12(x):
     return f"{x:.12f}"
 
@@ -78,6 +85,8 @@ CLAIMS = [
     ("doc/python.md", "{} ['branch_end', 'fold', 'fold', 'switch', 'branch_end']",
      lambda: branch_points("dw", "0.3", "5")),
     ("doc/python.md", "closed form at {} points", lambda: branch_points("westergaard")),
+    ("doc/python.md", 'repr(wa.trace_branch("dw", 0.3, 5.0))` is\n`{}`',
+     lambda: python_value('repr(wa.trace_branch("dw", 0.3, 5.0))')),
     ("doc/user-guide.md", "closed forms ({} points", lambda: branch_points("westergaard")),
 ]
 
