@@ -16,6 +16,7 @@ from ._parallel import points_per_chunk
 
 #: Model names and the library's integer constants (include/wavyadhesion.h).
 MODELS = {"westergaard": 0, "jkr": 1, "dw": 2, "md": 3}
+_MODEL_NAMES = {code: name for name, code in MODELS.items()}
 
 # Events asked for in a first load_path() call (path_type holds at most 64).
 PATH_CAPACITY = 64
@@ -32,7 +33,7 @@ MAP_N_MU_MAX, MAP_N_ALPHA_MAX, MAP_CELLS_MAX = (int(v) for v in _LIMITS[4:])
 C_INT_MAX = 2**31 - 1
 
 def model_name(code: int) -> str:
-    return next(name for name, c in MODELS.items() if c == code)
+    return _MODEL_NAMES[code]
 
 
 def real_scalar(x, name: str) -> float:

@@ -3,7 +3,6 @@ principal state (vectorised) and every state at one point."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import List, NamedTuple, Optional
 
 import numpy as np
@@ -26,8 +25,18 @@ _ROOTS_CAPACITY = 16
 _CHUNK_POINTS = 4096
 
 
-@dataclass(frozen=True, repr=False)
-class Equilibrium(TupleCompat, ResultMixin):
+class _EquilibriumFields(NamedTuple):
+    c_star: np.ndarray
+    P_star: np.ndarray
+    zone_case: np.ndarray
+    gbar: np.ndarray
+    a_star: Optional[np.ndarray] = None
+    alpha: Optional[np.ndarray] = None
+    mu: Optional[np.ndarray] = None
+    model: Optional[str] = None
+
+
+class Equilibrium(_EquilibriumFields):
     """Principal equilibrium states (numpy arrays of the broadcast shape). Unpacks as
     ``c_star, P_star, zone_case, gbar`` (it was a named tuple of these four); has
     ``to_si(params)``, ``to_dataframe()`` and a short repr.
@@ -50,16 +59,21 @@ class Equilibrium(TupleCompat, ResultMixin):
         The model name.
     """
 
-    c_star: np.ndarray
-    P_star: np.ndarray
-    zone_case: np.ndarray
-    gbar: np.ndarray
-    a_star: Optional[np.ndarray] = None
-    alpha: Optional[np.ndarray] = None
-    mu: Optional[np.ndarray] = None
-    model: Optional[str] = None
-
+    # a named tuple underneath (built in ~0.3 us: equilibrium is called point by point);
+    # unpacking, len() and indexing see the four fields it had before the coordinates
+    __slots__ = ()
     _tuple_fields = ("c_star", "P_star", "zone_case", "gbar")
+    __iter__ = TupleCompat.__iter__
+    __len__ = TupleCompat.__len__
+    __getitem__ = TupleCompat.__getitem__
+    _asdict = TupleCompat._asdict
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+
+    def __getnewargs__(self):
+        return tuple.__getitem__(self, slice(None))        # every field (pickle, copy)
     _columns = ("a_star", "alpha", "mu", "c_star", "P_star", "zone_case", "gbar")
     _coordinates = ("model",)
     _repr_fields = ("model", "alpha", "mu", "a_star", "P_star")
@@ -231,8 +245,11 @@ def equilibrium(model: str, alpha: ArrayLike, mu: ArrayLike, a_star: ArrayLike, 
                            np.empty(shape), np.empty(shape), np.empty(shape),
                            np.empty(shape), model_name(code))
     alpha_f, mu_f, a_f = flat_f64(alpha_b), flat_f64(mu_b), flat_f64(a_b)
-    coords = (shaped(a_f.copy(), shape), shaped(alpha_f.copy(), shape),
-              shaped(mu_f.copy(), shape), model_name(code))
+    if shape:
+        coords = (a_f.reshape(shape).copy(), alpha_f.reshape(shape).copy(),
+                  mu_f.reshape(shape).copy(), model_name(code))
+    else:                                            # numpy scalars, as the values
+        coords = (a_f[0], alpha_f[0], mu_f[0], model_name(code))
     if a_f.size <= _CHUNK_POINTS:
         c, p, z, g, nfail, ifail, status, message = _f.fa_equilibrium(code, alpha_f, mu_f, a_f)
         if nfail and errors == "raise":
