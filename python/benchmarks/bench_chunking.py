@@ -1,6 +1,8 @@
 """Cost of the chunked (interruptible) vectorised calls: best wall time of a 1-element
 and a 10^5-element ``equilibrium("dw", 0.3, 1.0, a)``, a 1-element ``jkr_load`` and
-``critical_forces("dw", 0.3, mu)`` on 1 and 200 values of mu.
+``critical_forces("dw", 0.3, mu)`` on 1 and 200 values of mu, and one-point
+``energy_lost``, ``gap_critical``, ``profile``, ``trace_branch`` (the cost of the result
+types).
 
 Usage (after ``pip install ./python``)::
 
@@ -40,6 +42,10 @@ def main():
         ("jkr_load 1e5", lambda: wa.jkr_load(0.3, a5), 1),
         ("critical_forces 1", lambda: wa.critical_forces("dw", 0.3, 1.0), 100),
         ("critical_forces 200", lambda: wa.critical_forces("dw", 0.3, mu200), 1),
+        ("energy_lost 1", lambda: wa.energy_lost("dw", 0.3, 1.0), 100),
+        ("gap_critical 1", lambda: wa.gap_critical("dw", 0.3, 1.0), 100),
+        ("profile 401", lambda: wa.profile("dw", 0.3, 1.0, 0.2), 200),
+        ("trace_branch", lambda: wa.trace_branch("dw", 0.3, 1.0), 100),
     ]
     for name, f, number in rows:
         t = best(f, r, number)

@@ -8,7 +8,7 @@ Usage (after ``pip install ./python`` and ``pip install dask distributed``)::
     python python/benchmarks/bench_parallel.py [--repeats 5] [--costs]
 
 ``--costs`` also prints the cost of one critical_forces point by model over alpha 0.1 to
-3 and mu 0.01 to 30 (the cheapest is ``_core._SWEEP_SECONDS``). The machine is shared
+3 and mu 0.01 to 30 (the cheapest is ``_loadpath._SWEEP_SECONDS``). The machine is shared
 with other jobs: every timing is repeated, the runs of the different executors
 alternate, and the best, the median and the worst are printed. Speed-up = best serial
 time / best parallel time; "per round" gives the median and range of serial / parallel
@@ -26,7 +26,7 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 import numpy as np
 
 import wavyadhesion as wa
-from wavyadhesion import _core
+from wavyadhesion import _loadpath
 from wavyadhesion._parallel import points_per_chunk, run_chunks
 
 WORKLOADS = {
@@ -125,7 +125,7 @@ def main():
                             lambda: wa.critical_forces(model, alpha, mu, executor=ex)))
                 serial = min(times[None])
                 sizes = ", ".join(
-                    f"{k} {points_per_chunk(executors[k], _core._SWEEP_SECONDS[code], 16)}"
+                    f"{k} {points_per_chunk(executors[k], _loadpath._SWEEP_SECONDS[code], 16)}"
                     for k in kinds[1:])
                 print(f"{title} ({np.broadcast(alpha, mu).size} points; points per chunk: "
                       f"{sizes}), {workers} worker(s):")
@@ -134,10 +134,10 @@ def main():
                     b = min(times[k])
                     # overhead from the empty-task cost (less noisy than the timings):
                     # chunks x cost per chunk / (best serial time / workers)
-                    n_chunks = len(_core._sweep_pieces(
+                    n_chunks = len(_loadpath._sweep_pieces(
                         *np.unique(np.broadcast_to(alpha, np.broadcast(alpha, mu).shape)
                                    .reshape(-1), return_inverse=True),
-                        points_per_chunk(executors[k], _core._SWEEP_SECONDS[code], 16)))
+                        points_per_chunk(executors[k], _loadpath._SWEEP_SECONDS[code], 16)))
                     est = n_chunks * empty[k] / (serial / workers)
                     # per round: serial time / this kind's time in the same round
                     ratios = [s / t for s, t in zip(times[None], times[k])]

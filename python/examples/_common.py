@@ -7,8 +7,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-#: doc/figures of the repository this script lives in.
-DEFAULT_OUT = Path(__file__).resolve().parents[2] / "doc" / "figures"
+#: The current directory: the scripts never write into the repository unless asked
+#: (``--out doc/figures`` regenerates the figures of the docs).
+DEFAULT_OUT = Path.cwd()
 
 
 def output_dir(description: str) -> Path:

@@ -6,7 +6,7 @@ contours of W*/(pi alpha^2/2), the fraction of the work of adhesion lost per
 gap-controlled cycle (energy_lost on a 16 x 21 grid, 5 points per decade, mu from 0.1:
 below, the fraction stays under 0.01, checked and printed at mu = 0.1).
 
-    python python/examples/adhesion_map.py [--out doc/figures]
+    python python/examples/adhesion_map.py [--out DIR]   # default: the current directory
 
 Needs the installed package (pip install ./python) and matplotlib.
 """

@@ -2,7 +2,7 @@
 (solid) and Maugis-Dugdale (dashed) models for several mu, with the Westergaard and JKR
 curves, for alpha = 0.3 and 0.6.
 
-    python python/examples/fig4_load_curves.py [--out doc/figures]
+    python python/examples/fig4_load_curves.py [--out DIR]   # default: the current directory
 
 Needs the installed package (pip install ./python) and matplotlib.
 """

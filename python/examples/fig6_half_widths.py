@@ -3,7 +3,7 @@ against the load P* for alpha = 0.3 and mu = 0.1, 1, 2.5, 3, 5 (double-Westergaa
 solid: c* < 1/2, dash-dot: c* = 1/2), with the load-controlled path (blue: jumps
 dotted, P_fc and P_pf marked).
 
-    python python/examples/fig6_half_widths.py [--out doc/figures]
+    python python/examples/fig6_half_widths.py [--out DIR]   # default: the current directory
 
 Needs the installed package (pip install ./python) and matplotlib.
 """

@@ -2,7 +2,7 @@
 alpha = 0.6 (mu = 0.1, 1, 2.5, 3, 5) and alpha = 1 (mu = 1, 3, as the paper's text says;
 its Fig. 8 caption contradicts the text, doc/theory.md).
 
-    python python/examples/fig7_fig8_half_widths.py [--out doc/figures]
+    python python/examples/fig7_fig8_half_widths.py [--out DIR]   # default: the current directory
 
 Needs the installed package (pip install ./python) and matplotlib.
 """

@@ -3,7 +3,7 @@ pull-off load P_pf* against mu (200 values, log-spaced from 0.01 to 10) for alph
 0.6, 1 (double-Westergaard; line style by mechanism: dash-dot gradual, solid jump from
 c* < 1/2, dashed jump from c* = 1/2, dotted snap at P* = 0).
 
-    python python/examples/fig9_10_critical_forces.py [--out doc/figures]
+    python python/examples/fig9_10_critical_forces.py [--out DIR]   # default: the current directory
 
 Needs the installed package (pip install ./python) and matplotlib.
 """

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import wavyadhesion as wa
-from wavyadhesion import _core, _wa_f2py as _f
+from wavyadhesion import _args, _errors, _wa_f2py as _f
 
 nan, inf = float("nan"), float("inf")
 SMALL_ALPHA = (0.1, 1.0, 3)
@@ -16,12 +16,12 @@ SMALL_MU = (0.1, 10.0, 4)
 def test_limits_are_the_librarys():
     # the bounds the Python layer checks are read from Fortran (fa_limits), and the
     # Fortran map refuses the first count beyond them (a small call: 2 alpha)
-    assert (_core._MAP_N_MU_MAX, _core._MAP_N_ALPHA_MAX, _core._MAP_CELLS_MAX) == (
+    assert (_args.MAP_N_MU_MAX, _args.MAP_N_ALPHA_MAX, _args.MAP_CELLS_MAX) == (
         100000, 100000, 10**7)
     alpha = np.array([0.1, 0.2])
-    for n_mu in (_core._MAP_N_MU_MAX + 1, 1):
+    for n_mu in (_args.MAP_N_MU_MAX + 1, 1):
         out = _f.fa_adhesion_map(n_mu, 8, 2, alpha, 0.1, 10.0, 1, 1)
-        assert out[12] == 1 and "n_mu must be in [2, 100000]" in _core._text(out[13])
+        assert out[12] == 1 and "n_mu must be in [2, 100000]" in _errors.message_text(out[13])
 
 
 @pytest.mark.parametrize("n, needle", [

@@ -110,9 +110,9 @@ def test_scalars_only():
 
 def test_capacity_retry(monkeypatch):
     """A first call with too small a capacity is repeated with the exact size."""
-    from wavyadhesion import _core
+    from wavyadhesion import _branch
     full = wa.trace_branch("dw", 0.3, 5.0)
-    monkeypatch.setattr(_core, "_BRANCH_CAPACITY", 10)
+    monkeypatch.setattr(_branch, "_BRANCH_CAPACITY", 10)
     short = wa.trace_branch("dw", 0.3, 5.0)
     assert len(short) == len(full)
     for name in ARRAYS:

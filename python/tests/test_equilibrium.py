@@ -108,6 +108,6 @@ def test_md_three_states(monkeypatch):
     full = wa.roots("md", 0.3, 1.0, 0.3)
     assert [s.zone_case for s in full] == [1, 1, 2]
     assert full[0].c_star < full[1].c_star < full[2].c_star == 0.5
-    from wavyadhesion import _core
-    monkeypatch.setattr(_core, "_ROOTS_CAPACITY", 1)
+    from wavyadhesion import _equilibrium
+    monkeypatch.setattr(_equilibrium, "_ROOTS_CAPACITY", 1)
     assert wa.roots("md", 0.3, 1.0, 0.3) == full

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import wavyadhesion as wa
-from wavyadhesion import _core
+from wavyadhesion import _errors
 
 
 def test_hierarchy():
@@ -87,7 +87,7 @@ def test_status_mapping(status, cls):
     """Numerical failures cannot be provoked on demand: check the mapping itself, and
     that the library's fixed text is used when a failure brings no message."""
     with pytest.raises(cls) as info:
-        _core._raise(status, b" " * 256)
+        _errors.raise_status(status, b" " * 256)
     assert info.value.status == status
     assert info.value.message  # the status text, never empty
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import wavyadhesion as wa
-from wavyadhesion import _core, _wa_f2py as _f
+from wavyadhesion import _gap, _wa_f2py as _f
 from wavyadhesion._gapcritical import GAP_CRITICAL_FIELDS
 from wavyadhesion._parallel import call_interruptibly
 
@@ -34,7 +34,7 @@ def test_gap_critical_equals_one_unchunked_call():
     mu = np.concatenate([[0.0], np.logspace(-2, 1.5, 45)])      # 46 mu: three chunks
     for model, alpha in (("dw", 0.3), ("md", 0.7)):
         g = wa.gap_critical(model, alpha, mu)
-        vals, rows, ifail, status, _ = _f.fa_gap_critical_sweep(_core.MODELS[model], alpha, mu)
+        vals, rows, ifail, status, _ = _f.fa_gap_critical_sweep(wa.MODELS[model], alpha, mu)
         assert status == 0 and ifail == 0 and (rows == 0).all()
         for k, name in enumerate(GAP_CRITICAL_FIELDS):
             assert np.array_equal(getattr(g, name), vals[k], equal_nan=True), name
@@ -98,8 +98,8 @@ def test_gap_law_in_chunks_equals_one_call():
     # 70000 mean gaps: two facade calls of at most 65536, each walking the cycle again
     g = np.linspace(0.0, 1.3, 70000)
     law = wa.gap_law("md", 0.3, 1.0, g)
-    *values, w, wf, status, _ = _f.fa_gap_law(_core.MODELS["md"], 0.3, 1.0, g)
-    assert status == 0 and _core._CHUNK_GAPS < g.size
+    *values, w, wf, status, _ = _f.fa_gap_law(wa.MODELS["md"], 0.3, 1.0, g)
+    assert status == 0 and _gap._CHUNK_GAPS < g.size
     for got, want in zip(law[1:5], values):
         assert np.array_equal(got, want)
     assert (law.W_star, law.W_fraction) == (w, wf)

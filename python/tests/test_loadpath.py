@@ -49,20 +49,20 @@ def test_vectorised_equals_scalar_calls():
 def test_one_call_per_alpha_chunk(monkeypatch):
     """Points sharing an alpha go to the facade together, in chunks of _CHUNK_SWEEP mu
     (between chunks Python can raise KeyboardInterrupt)."""
-    from wavyadhesion import _core
+    from wavyadhesion import _loadpath, _wa_f2py as _f
     calls = []
-    real = _core._f.fa_critical_sweep
+    real = _f.fa_critical_sweep
 
     def spy(*args):
         calls.append((args[1], len(args[2])))
         return real(*args)
 
-    monkeypatch.setattr(_core._f, "fa_critical_sweep", spy)
+    monkeypatch.setattr(_f, "fa_critical_sweep", spy)
     wa.critical_forces("dw", [0.3, 0.6, 0.3, 0.6], np.linspace(0.1, 3.0, 4))
     assert sorted(calls) == [(0.3, 2), (0.6, 2)]
     calls.clear()
     wa.critical_forces("dw", 0.3, np.logspace(-2, 1, 50))
-    chunk = _core._CHUNK_SWEEP
+    chunk = _loadpath._CHUNK_SWEEP
     assert calls == [(0.3, chunk)] * (50 // chunk) + [(0.3, 50 % chunk)]
 
 

@@ -7,7 +7,13 @@ import re
 import pytest
 
 import wavyadhesion as wa
-from wavyadhesion import _core
+import importlib
+
+import wavyadhesion
+from wavyadhesion import _errors, _wa_f2py as _f
+
+MODULES = ["_args", "_branch", "_energy", "_equilibrium", "_errors", "_gap", "_gapcritical",
+           "_loadpath", "_map", "_parallel", "_params", "_profile", "_results", "plotting"]
 
 
 def test_public_names():
@@ -21,7 +27,7 @@ def test_public_names():
 
 
 def test_docstring_examples():
-    for module in (wa, _core):
+    for module in [wa] + [importlib.import_module(f"wavyadhesion.{m}") for m in MODULES]:
         result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
         assert result.failed == 0
 
@@ -91,6 +97,15 @@ def test_meson_installs_every_module(repo):
     meson = (repo / "python" / "meson.build").read_text()
     for f in sorted((repo / "python" / "wavyadhesion").glob("*.py")):
         assert f"'wavyadhesion/{f.name}'" in meson, f"{f.name} missing from meson.build"
+    listed = set(re.findall(r"'wavyadhesion/([^']+)'", meson))
+    on_disk = {f.name for f in (repo / "python" / "wavyadhesion").glob("*.py")}
+    assert listed == on_disk | {"py.typed"}, listed ^ (on_disk | {"py.typed"})
+
+
+def test_py_typed_installed():
+    """PEP 561 marker: type checkers read the package's annotations."""
+    from pathlib import Path
+    assert (Path(wa.__file__).parent / "py.typed").is_file()
 
 
 def test_meson_lists_every_source(repo):
@@ -105,8 +120,8 @@ def test_status_texts_match_c_interface():
     want = ["ok", "invalid argument", "no solution", "iteration did not converge",
             "output capacity too small", "numerical error"]
     for code, text in enumerate(want):
-        assert _core._text(_core._f.fa_status_text(code)) == text
-    assert _core._text(_core._f.fa_status_text(99)) == "unknown status"
+        assert _errors.message_text(_f.fa_status_text(code)) == text
+    assert _errors.message_text(_f.fa_status_text(99)) == "unknown status"
 
 
 def test_extension_has_no_executable_stack(repo):

@@ -21,7 +21,7 @@ import pytest
 from dask.distributed import Client, LocalCluster
 
 import wavyadhesion as wa
-from wavyadhesion import _core
+from wavyadhesion import _loadpath, _wa_f2py as _f
 from wavyadhesion._parallel import chunk_seconds, points_per_chunk, run_chunks
 
 FIELDS = ("P_fc", "P_pf", "fc_mechanism", "pf_mechanism", "status")
@@ -112,13 +112,13 @@ def test_serial_chunks_unchanged(monkeypatch):
     """Without an executor the facade is called with at most 16 mu of one alpha, as
     before (Ctrl-C between chunks); chunk_size changes the calls, not the results."""
     calls = []
-    real = _core._f.fa_critical_sweep
+    real = _f.fa_critical_sweep
 
     def spy(code, alpha, mu):
         calls.append((alpha, len(mu)))
         return real(code, alpha, mu)
 
-    monkeypatch.setattr(_core._f, "fa_critical_sweep", spy)
+    monkeypatch.setattr(_f, "fa_critical_sweep", spy)
     mu = np.linspace(0.5, 5.0, 40)
     first = wa.critical_forces("dw", [[0.3], [0.6]], mu)
     assert calls == [(0.3, 16), (0.3, 16), (0.3, 8), (0.6, 8), (0.6, 16), (0.6, 16)]
@@ -130,11 +130,11 @@ def test_serial_chunks_unchanged(monkeypatch):
 def test_run_chunks_order_and_picklable_worker():
     chunks = [(2, [(0.3, np.array([1.0, 2.0]))]), (2, [(0.6, np.array([3.0]))]),
               (0, [(0.1, np.array([0.0]))])]
-    serial = run_chunks(_core._sweep_task, chunks)
+    serial = run_chunks(_loadpath._sweep_task, chunks)
     assert len(serial) == 3 and [len(r) for r in serial] == [1, 1, 1]
-    pickle.dumps(_core._sweep_task)                  # by reference: processes, dask, MPI
+    pickle.dumps(_loadpath._sweep_task)                  # by reference: processes, dask, MPI
     with ThreadPoolExecutor(max_workers=2) as pool:
-        threaded = run_chunks(_core._sweep_task, chunks, pool)
+        threaded = run_chunks(_loadpath._sweep_task, chunks, pool)
     for s, t in zip(serial, threaded):
         for x, y in zip(s[0], t[0]):
             assert np.asarray(x).tobytes() == np.asarray(y).tobytes()
@@ -147,5 +147,5 @@ def test_chunk_sizes_by_executor(executors):
     assert chunk_seconds(executors["dask"]) == 0.2
     assert chunk_seconds(object()) == 0.05                   # MPI and anything else
     # DW: >= 50 ms of work per process chunk at the cheapest measured cost per mu
-    n = points_per_chunk(executors["processes"], _core._SWEEP_SECONDS[2], 16)
-    assert n * _core._SWEEP_SECONDS[2] >= 0.05 and n == 173
+    n = points_per_chunk(executors["processes"], _loadpath._SWEEP_SECONDS[2], 16)
+    assert n * _loadpath._SWEEP_SECONDS[2] >= 0.05 and n == 173

@@ -12,7 +12,15 @@ import numpy as np
 import pytest
 
 import wavyadhesion as wa
-from wavyadhesion import _core
+from wavyadhesion import (_args, _equilibrium, _gapcritical, _loadpath, _profile,
+                          _wa_f2py as _f)
+
+
+def _small_chunks(monkeypatch, points, sweep):
+    for module in (_equilibrium, _profile):
+        monkeypatch.setattr(module, "_CHUNK_POINTS", points)
+    for module in (_loadpath, _gapcritical):
+        monkeypatch.setattr(module, "_CHUNK_SWEEP", sweep)
 
 
 def test_invalid_type_error_is_type_and_value_error():
@@ -118,8 +126,7 @@ def test_from_dimensional_moduli_errors_name_the_argument(name):
 
 @pytest.fixture
 def small_chunks(monkeypatch):
-    monkeypatch.setattr(_core, "_CHUNK_POINTS", 7)
-    monkeypatch.setattr(_core, "_CHUNK_SWEEP", 3)
+    _small_chunks(monkeypatch, 7, 3)
 
 
 def test_chunked_results_equal_one_call(monkeypatch):
@@ -129,8 +136,7 @@ def test_chunked_results_equal_one_call(monkeypatch):
     jkr = wa.jkr_load(alpha, a)
     wl = wa.westergaard_load(a)
     crit = wa.critical_forces("dw", [[0.3], [0.6]], np.linspace(0.1, 5, 8))
-    monkeypatch.setattr(_core, "_CHUNK_POINTS", 7)
-    monkeypatch.setattr(_core, "_CHUNK_SWEEP", 3)
+    _small_chunks(monkeypatch, 7, 3)
     chunked = wa.equilibrium("md", alpha, 1.0, a)
     for x, y in zip(whole, chunked):
         np.testing.assert_array_equal(x, y)
@@ -210,15 +216,15 @@ def test_long_call_is_interruptible(func):
     target, call = LONG_CALLS[func]
     code = textwrap.dedent(f"""
         import sys, numpy as np, wavyadhesion as wa
-        from wavyadhesion import _core
+        from wavyadhesion import _wa_f2py as _f
         calls = [0]
-        real = _core.{target}
+        real = {target}
         def spy(*args):
             calls[0] += 1
             if calls[0] == 2:
                 print("started", flush=True)
             return real(*args)
-        setattr(_core._f, "{target.split('.')[1]}", spy)
+        setattr(_f, "{target.split('.')[1]}", spy)
         try:
             {call}
         except KeyboardInterrupt:
@@ -256,7 +262,7 @@ def test_domain_bounds_equal_the_header(repo):
     import re
     header = (repo / "include" / "wavyadhesion.h").read_text()
     c = dict(re.findall(r"#define\s+(WA_(?:ALPHA|MU)_M(?:IN|AX))\s+(\S+)", header))
-    assert (_core._ALPHA_MIN, _core._ALPHA_MAX, _core._MU_MIN, _core._MU_MAX) == tuple(
+    assert (_args.ALPHA_MIN, _args.ALPHA_MAX, _args.MU_MIN, _args.MU_MAX) == tuple(
         float(c[k]) for k in ("WA_ALPHA_MIN", "WA_ALPHA_MAX", "WA_MU_MIN", "WA_MU_MAX"))
 
 
@@ -266,14 +272,14 @@ def test_domain_bounds_equal_the_header(repo):
 ])
 def test_sweep_domain_checked_before_any_work(monkeypatch, alpha, mu, name, index):
     calls = []
-    real = _core._f.fa_critical_sweep
+    real = _f.fa_critical_sweep
 
     def spy(code, a, m):
         calls.append(len(m))
         return real(code, a, m)
 
-    monkeypatch.setattr(_core._f, "fa_critical_sweep", spy)
-    monkeypatch.setattr(_core, "_CHUNK_SWEEP", 1)
+    monkeypatch.setattr(_f, "fa_critical_sweep", spy)
+    monkeypatch.setattr(_loadpath, "_CHUNK_SWEEP", 1)
     with pytest.raises(wa.InvalidArgumentError, match=rf"{name} .*index \{index[:-1]}\)"):
         wa.critical_forces("dw", alpha, mu)
     assert calls == [1]                  # only the call that words the message

@@ -8,10 +8,15 @@ Loads are P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile); wi
 a* = a/L and c* = c/L lie in [0, 1/2]; parameters alpha > 0 (Johnson's) and mu >= 0
 (transition parameter). Models are named "westergaard", "jkr", "dw", "md".
 
+Every result converts itself to SI units: ``result.to_si(params)`` with a
+``Params.from_dimensional(...)`` gives loads in Pa and N/m, lengths and gaps in m and
+energies in J/m^2; ``result.to_dataframe()`` gives a pandas table (pandas is needed only
+then). Long sweeps take ``progress=True`` (or a callable ``fn(done, total)``).
+
 Examples
 --------
 >>> import numpy as np, wavyadhesion as wa
->>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a=np.linspace(0.01, 0.49, 5))
+>>> eq = wa.equilibrium("dw", alpha=0.3, mu=1.0, a_star=np.linspace(0.01, 0.49, 5))
 >>> eq.zone_case.shape
 (5,)
 >>> P_fc, P_pf = wa.critical_forces("dw", alpha=0.3, mu=np.logspace(-2, 1, 4))
@@ -26,41 +31,17 @@ from ._map import AdhesionMap, Boundary, SpecialPoint, adhesion_map, boundary_me
 from ._map import GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._energy import EnergyLost, energy_lost
-from ._core import (
-    EVENTS,
-    MECHANISMS,
-    MODELS,
-    STAGES,
-    Branch,
-    BranchEvent,
-    ConvergenceError,
-    CriticalForces,
-    Equilibrium,
-    InvalidArgumentError,
-    InvalidTypeError,
-    LoadPath,
-    NoSolutionError,
-    Params,
-    PathEvent,
-    Profile,
-    Scales,
-    State,
-    WavyAdhesionError,
-    GapLaw,
-    critical_forces,
-    equilibrium,
-    gap_law,
-    gap_path,
-    GapPath,
-    GAP_EVENTS,
-    GAP_STAGES,
-    jkr_load,
-    load_path,
-    profile,
-    roots,
-    trace_branch,
-    westergaard_load,
-)
+from ._errors import (ConvergenceError, InvalidArgumentError, InvalidTypeError,
+                      NoSolutionError, WavyAdhesionError)
+from ._args import MODELS
+from ._equilibrium import Equilibrium, State, equilibrium, jkr_load, roots, westergaard_load
+from ._branch import EVENTS, Branch, BranchEvent, trace_branch
+from ._loadpath import (MECHANISMS, STAGES, CriticalForces, LoadPath, PathEvent,
+                        critical_forces, load_path)
+from ._profile import Profile, profile
+from ._params import Params, Scales
+from ._gap import GAP_EVENTS, GAP_STAGES, GapLaw, GapPath, gap_law, gap_path
+from ._results import SIValues
 
 # The version of the installed distribution, which meson-python takes from the file
 # VERSION at the repository root (python/meson.build), the one source of the number.
@@ -102,6 +83,7 @@ __all__ = [
     "State",
     "WavyAdhesionError",
     "GapLaw",
+    "SIValues",
     "critical_forces",
     "equilibrium",
     "gap_law",

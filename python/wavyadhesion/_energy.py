@@ -4,15 +4,19 @@ on any ``concurrent.futures``-style executor (the adhesion-map figures draw its 
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from concurrent.futures import Executor
+from typing import Any, Callable, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
-from ._core import (_ALPHA_MAX, _ALPHA_MIN, _CAPACITY_TOO_SMALL, _INVALID_ARGUMENT,
-                    _MU_MAX, _MU_MIN, _OK, _PATH_CAPACITY, InvalidArgumentError, _chunk_size, _flat, _float_array,
-                    _model_code, _raise, _shaped, _text, _where)
-from ._parallel import iter_chunks
+from ._args import (ALPHA_MAX, ALPHA_MIN, MU_MAX, MU_MIN, PATH_CAPACITY, at_index, chunk_size_for,
+                    flat_f64, float_array, model_code, model_name, shaped)
+from ._errors import (CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError,
+                      message_text, raise_status)
+from ._parallel import iter_chunks, make_progress
+from ._results import ResultMixin
 
 __all__ = ["EnergyLost", "energy_lost"]
 
@@ -43,11 +47,21 @@ class EnergyLost(NamedTuple):
     #: alpha and mu, broadcast to that shape (the coordinates of a grid)
     alpha: np.ndarray
     mu: np.ndarray
+    #: the model name
+    model: Optional[str] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("alpha", "mu", "W_star", "W_fraction", "status")
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "W_star", "W_fraction")
 
     @property
     def ok(self) -> np.ndarray:
         """True where the point was computed (status 0)."""
-        return np.asarray(self.status) == _OK
+        return np.asarray(self.status) == OK
 
 
 def _energy_task(task):
@@ -59,23 +73,24 @@ def _energy_task(task):
     status = np.zeros(alpha.size, dtype=np.int32)
     messages = {}
     for k in range(alpha.size):
-        capacity = _PATH_CAPACITY
+        capacity = PATH_CAPACITY
         for _ in range(8):                  # grow the event arrays (bounded)
             out = _f.fa_gap_path(capacity, code, float(alpha[k]), float(mu[k]))
             n, stat = int(out[7]), int(out[-2])
-            if stat != _CAPACITY_TOO_SMALL or n <= capacity:
+            if stat != CAPACITY_TOO_SMALL or n <= capacity:
                 break
             capacity = n
-        if stat == _OK:
+        if stat == OK:
             w[k], wf[k] = out[8], out[9]
         else:
             status[k] = stat
-            messages[k] = _text(out[-1]) or _text(_f.fa_status_text(stat))
+            messages[k] = message_text(out[-1]) or message_text(_f.fa_status_text(stat))
     return w, wf, status, messages
 
 
-def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
-                chunk_size=None) -> EnergyLost:
+def energy_lost(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
+                executor: Optional[Executor] = None, chunk_size: Optional[int] = None,
+                progress: Union[bool, Callable[[int, int], Any], None] = None) -> EnergyLost:
     """Energy lost per approach-retraction cycle under gap control, W*, and its fraction of
     the work of adhesion W*/(pi alpha^2/2), at every point of the broadcast of `alpha` and
     `mu`: the ``W_star`` and ``W_fraction`` of :func:`~wavyadhesion.gap_path`, point by
@@ -106,12 +121,17 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
         (threads), 50 ms (processes, MPI) or 200 ms (dask) of the cheapest cycles. A task
         takes every n-th point (n the number of tasks), so that the cheap and the costly
         cycles (small and large mu) are spread over the tasks evenly.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)`` (points) after each chunk, in
+        order (on an executor: as the tasks come back). None (default): nothing.
 
     Returns
     -------
     EnergyLost
         ``W_star``, ``W_fraction``, ``status``, ``messages`` (index tuple -> message),
-        and ``alpha``, ``mu`` broadcast to the same shape.
+        ``alpha``, ``mu`` broadcast to the same shape, and ``model``. ``to_si(params)``
+        gives W in J/m^2.
 
     Raises
     ------
@@ -132,26 +152,26 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
     >>> e.W_fraction.round(4)
     array([0.1382, 0.2359])
     """
-    code = _model_code(model)
+    code = model_code(model)
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'",
-                                   _INVALID_ARGUMENT)
-    alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
+                                   INVALID_ARGUMENT)
+    alpha_b, mu_b = np.broadcast_arrays(float_array(alpha, "alpha"), float_array(mu, "mu"))
     shape = mu_b.shape
-    alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
+    alpha_f, mu_f = flat_f64(alpha_b), flat_f64(mu_b)
     if mu_f.size == 0:
         raise InvalidArgumentError("alpha and mu broadcast to an empty array: give at least "
-                                   "one point", _INVALID_ARGUMENT)
-    size = _chunk_size(chunk_size, executor, _GAP_SECONDS[code], _CHUNK_ENERGY)
+                                   "one point", INVALID_ARGUMENT)
+    size = chunk_size_for(chunk_size, executor, _GAP_SECONDS[code], _CHUNK_ENERGY)
     if errors == "raise":                      # every point validated before any work
         with np.errstate(invalid="ignore"):
-            bad = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX) &
-                    ((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX))))
+            bad = ~((alpha_f >= ALPHA_MIN) & (alpha_f <= ALPHA_MAX) &
+                    ((mu_f == 0) | ((mu_f >= MU_MIN) & (mu_f <= MU_MAX))))
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             *_, status, message = _f.fa_gap_path(1, code, float(alpha_f[i]), float(mu_f[i]))
-            _raise(status if status != _OK else _INVALID_ARGUMENT, message,
-                   _where(i + 1, shape))
+            raise_status(status if status != OK else INVALID_ARGUMENT, message,
+                   at_index(i + 1, shape))
     n_tasks = -(-mu_f.size // size)
     picks = [np.arange(t, mu_f.size, n_tasks) for t in range(n_tasks)]   # strided
     tasks = [(code, alpha_f[idx].copy(), mu_f[idx].copy()) for idx in picks]
@@ -159,17 +179,30 @@ def energy_lost(model, alpha, mu, *, errors: str = "raise", executor=None,
     wf = np.full(mu_f.size, np.nan)
     status = np.zeros(mu_f.size, dtype=np.int32)
     messages = {}
-    for idx, (tw, twf, tstatus, tmessages) in zip(picks,
-                                                  iter_chunks(_energy_task, tasks, executor)):
+    report = make_progress(progress, mu_f.size, "energy_lost")
+    try:
+        _collect(picks, iter_chunks(_energy_task, tasks, executor), w, wf, status, messages,
+                 errors, shape, alpha_f, mu_f, report)
+    finally:
+        if report is not None:
+            report.close()
+    return EnergyLost(shaped(w, shape), shaped(wf, shape), shaped(status, shape),
+                      dict(sorted(messages.items())), shaped(alpha_f.copy(), shape),
+                      shaped(mu_f.copy(), shape), model_name(code))
+
+
+def _collect(picks, results, w, wf, status, messages, errors, shape, alpha_f, mu_f, report):
+    """Put each task's results in place (in task order); errors="raise" raises at the
+    first failed point met."""
+    for idx, (tw, twf, tstatus, tmessages) in zip(picks, results):
         w[idx], wf[idx], status[idx] = tw, twf, tstatus
         for k, text in sorted(tmessages.items()):
             i = int(idx[k])
             key = tuple(int(v) for v in np.unravel_index(i, shape)) if shape else ()
             if errors == "raise":
-                where = _where(i + 1, shape)
-                _raise(int(tstatus[k]), text, f"{where + ', ' if where else ''}"
-                       f"alpha = {float(alpha_f[i])!r}, mu = {float(mu_f[i])!r}")
+                where = at_index(i + 1, shape)
+                raise_status(int(tstatus[k]), text, f"{where + ', ' if where else ''}"
+                             f"alpha = {float(alpha_f[i])!r}, mu = {float(mu_f[i])!r}")
             messages[key] = text
-    return EnergyLost(_shaped(w, shape), _shaped(wf, shape), _shaped(status, shape),
-                      dict(sorted(messages.items())), _shaped(alpha_f.copy(), shape),
-                      _shaped(mu_f.copy(), shape))
+        if report is not None:
+            report.update(idx.size)

@@ -4,14 +4,20 @@ control."""
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, Callable, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
-from ._core import (InvalidArgumentError, _INVALID_ARGUMENT, _OK, _ALPHA_MAX, _ALPHA_MIN,
-                    _CHUNK_SWEEP, _MU_MAX, _MU_MIN, _check_sweep_arguments, _chunks, _flat,
-                    _float_array, _model_code, _raise, _shaped, _text, _where)
+from ._args import (ALPHA_MAX, ALPHA_MIN, MU_MAX, MU_MIN, at_index, check_sweep_arguments,
+                    chunk_slices, flat_f64, float_array, model_code, model_name, shaped)
+from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, message_text, raise_status
+from ._parallel import make_progress
+from ._results import ResultMixin
+
+# mu per facade call (one alpha): Ctrl-C is seen between two calls (~0.3 s for MD)
+_CHUNK_SWEEP = 16
 
 #: The fields of GapCritical that hold values, in the order of the Fortran
 #: ``gap_critical_names`` and the C ``WA_GAP_CRITICAL_*`` indices.
@@ -47,6 +53,18 @@ class GapCritical(NamedTuple):
     status: np.ndarray
     #: index (into the flattened points) -> message, for each failed point
     messages: dict
+    #: alpha and mu broadcast to the shape of the values (the coordinates), the model
+    alpha: Optional[np.ndarray] = None
+    mu: Optional[np.ndarray] = None
+    model: Optional[str] = None
+
+    to_si = ResultMixin.to_si
+    to_dataframe = ResultMixin.to_dataframe
+    _field_items = ResultMixin._field_items
+    __repr__ = ResultMixin.__repr__
+    _columns = ("alpha", "mu") + GAP_CRITICAL_FIELDS + ("status",)
+    _coordinates = ("model",)
+    _repr_fields = ("model", "alpha", "mu", "g_touch", "P_min")
 
 
 def _gap_chunk(code, alpha, mu_f, idx, values, status_out, messages, errors, shape):
@@ -55,30 +73,32 @@ def _gap_chunk(code, alpha, mu_f, idx, values, status_out, messages, errors, sha
     the first one raises)."""
     vals, rows, ifail, status, message = _f.fa_gap_critical_sweep(
         code, alpha, np.ascontiguousarray(mu_f[idx]))
-    if status == _INVALID_ARGUMENT and (rows == _INVALID_ARGUMENT).all():
+    if status == INVALID_ARGUMENT and (rows == INVALID_ARGUMENT).all():
         # this alpha or one of its mu was refused: nothing computed for its points
         where = int(idx[ifail - 1]) if ifail > 0 else int(idx[0])
         if errors == "raise":
-            _raise(status, message, _where(where + 1, shape))
+            raise_status(status, message, at_index(where + 1, shape))
         status_out[idx] = status
         for i in idx:
-            messages[int(i)] = _text(message)
+            messages[int(i)] = message_text(message)
         return
     values[:, idx] = vals
     status_out[idx] = rows
-    for j in np.flatnonzero(rows != _OK):
+    for j in np.flatnonzero(rows != OK):
         i = int(idx[j])
         # the sweep's message is about its first failing row: ask this row's own (as
         # critical_forces does; failures are rare), so that it does not depend on chunks
         row_status, text = _f.fa_gap_critical_message(code, alpha, float(mu_f[i]))
-        text = _text(text) or _text(_f.fa_status_text(int(rows[j])))
+        text = message_text(text) or message_text(_f.fa_status_text(int(rows[j])))
         text = f"alpha = {alpha!r}, mu = {float(mu_f[i])!r}: {text}"
         if errors == "raise":
-            _raise(int(rows[j]), text, _where(i + 1, shape))
+            raise_status(int(rows[j]), text, at_index(i + 1, shape))
         messages[i] = text
 
 
-def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
+def gap_critical(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
+                 progress: Union[bool, Callable[[int, int], Any], None] = None
+                 ) -> GapCritical:
     """Critical values under gap (mean-gap) control, vectorised over mu and broadcast
     with alpha: where the approach first feels the surface and jumps in (a jump under gap
     control keeps gbar*), where contact is made, the most tensile load on the retraction
@@ -98,12 +118,16 @@ def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
         "raise" (default): raise at the first point that fails (an invalid alpha or mu
         before any work). "nan": every point is computed; a failed or invalid one gets
         NaN values and its status and message.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)`` (points) after each chunk, in
+        order. None (default): nothing.
 
     Returns
     -------
     GapCritical
-        The ten values (fields named as in GAP_CRITICAL_FIELDS), ``status`` and
-        ``messages``.
+        The ten values (fields named as in GAP_CRITICAL_FIELDS), ``status``,
+        ``messages`` and the coordinates ``alpha``, ``mu`` (broadcast), ``model``.
 
     Raises
     ------
@@ -119,35 +143,46 @@ def gap_critical(model, alpha, mu, *, errors: str = "raise") -> GapCritical:
     >>> float(g.g_touch), float(g.P_jump_in), float(g.g_contact_lost)
     (1.0, 0.0, 1.0)
     """
-    code = _model_code(model)
+    code = model_code(model)
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'",
-                                   _INVALID_ARGUMENT)
-    alpha_b, mu_b = np.broadcast_arrays(_float_array(alpha, "alpha"), _float_array(mu, "mu"))
+                                   INVALID_ARGUMENT)
+    alpha_b, mu_b = np.broadcast_arrays(float_array(alpha, "alpha"), float_array(mu, "mu"))
     shape = mu_b.shape
-    alpha_f, mu_f = _flat(alpha_b), _flat(mu_b)
+    alpha_f, mu_f = flat_f64(alpha_b), flat_f64(mu_b)
     if mu_f.size == 0:
-        raise InvalidArgumentError("mu is empty: give at least one value", _INVALID_ARGUMENT)
+        raise InvalidArgumentError("mu is empty: give at least one value", INVALID_ARGUMENT)
     values = np.full((len(GAP_CRITICAL_FIELDS), mu_f.size), np.nan)
     status_out = np.zeros(mu_f.size, dtype=np.int32)
     messages = {}
     if errors == "raise":
-        _check_sweep_arguments(code, alpha_f, mu_f, shape)   # every point before any work
+        check_sweep_arguments(code, alpha_f, mu_f, shape)   # every point before any work
     with np.errstate(invalid="ignore"):
-        bad = ~((alpha_f >= _ALPHA_MIN) & (alpha_f <= _ALPHA_MAX) &
-                ((mu_f == 0) | ((mu_f >= _MU_MIN) & (mu_f <= _MU_MAX))))
+        bad = ~((alpha_f >= ALPHA_MIN) & (alpha_f <= ALPHA_MAX) &
+                ((mu_f == 0) | ((mu_f >= MU_MIN) & (mu_f <= MU_MAX))))
     for i in np.flatnonzero(bad):                       # errors="nan": NaN rows, reasons
         *_, status, message = _f.fa_gap_critical_sweep(code, float(alpha_f[i]),
                                                        np.array([mu_f[i]]))
         status_out[i] = status
-        messages[int(i)] = _text(message)
+        messages[int(i)] = message_text(message)
     uniq, inverse = np.unique(alpha_f[~bad], return_inverse=True)
     inverse = inverse.reshape(-1)
     good = np.flatnonzero(~bad)
-    for k, value in enumerate(uniq):
-        group = good[inverse == k]
-        for sl in _chunks(group.size, _CHUNK_SWEEP):    # Ctrl-C is seen between chunks
-            _gap_chunk(code, float(value), mu_f, group[sl], values, status_out, messages,
-                       errors, shape)
-    fields = [_shaped(values[k], shape) for k in range(len(GAP_CRITICAL_FIELDS))]
-    return GapCritical(*fields, _shaped(status_out, shape), messages)
+    report = make_progress(progress, mu_f.size, "gap_critical")
+    try:
+        if report is not None:
+            report.update(int(bad.sum()))
+        for k, value in enumerate(uniq):
+            group = good[inverse == k]
+            for sl in chunk_slices(group.size, _CHUNK_SWEEP):  # Ctrl-C is seen between chunks
+                _gap_chunk(code, float(value), mu_f, group[sl], values, status_out,
+                           messages, errors, shape)
+                if report is not None:
+                    report.update(sl.stop - sl.start)
+    finally:
+        if report is not None:
+            report.close()
+    fields = [shaped(values[k], shape) for k in range(len(GAP_CRITICAL_FIELDS))]
+    return GapCritical(*fields, shaped(status_out, shape), messages,
+                       shaped(alpha_f.copy(), shape), shaped(mu_f.copy(), shape),
+                       model_name(code))

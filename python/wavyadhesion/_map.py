@@ -3,16 +3,18 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
+from concurrent.futures import Executor
+from typing import Any, Callable, Optional, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
-from ._core import (MODELS, InvalidArgumentError, InvalidTypeError, _ALPHA_MAX, _ALPHA_MIN,
-                    _C_INT_MAX, _INVALID_ARGUMENT, _MAP_CELLS_MAX, _MAP_N_ALPHA_MAX,
-                    _MAP_N_MU_MAX, _MU_MAX, _MU_MIN, _OK, _count, _float_array, _model_code,
-                    _raise, _real_in, critical_forces)
-from ._parallel import Background, call_interruptibly, run_chunks
+from ._args import (ALPHA_MAX, ALPHA_MIN, C_INT_MAX, MAP_CELLS_MAX, MAP_N_ALPHA_MAX, MAP_N_MU_MAX,
+                    MODELS, MU_MAX, MU_MIN, count_in, float_array, model_code, real_in)
+from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, InvalidTypeError, raise_status
+from ._loadpath import critical_forces
+from ._parallel import Background, call_interruptibly, iter_chunks, make_progress, run_chunks
 
 #: Mechanism names by code (full contact: 0..3; pull-off: 0..2).
 _NAMES = ("gradual", "jump case 1", "jump case 2", "snap at P=0")
@@ -93,7 +95,7 @@ class SpecialPoint:
         return f"{first}: the load path fails here"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class AdhesionMap:
     """Boundaries and regions of one model over an (alpha, mu) grid.
 
@@ -127,6 +129,31 @@ class AdhesionMap:
     ga_region: Optional[np.ndarray] = None
     gr_region: Optional[np.ndarray] = None
 
+    def __repr__(self) -> str:
+        return (f"AdhesionMap(model={self.model!r}, control={self.control!r}, "
+                f"alpha={self.alpha.size} in [{self.alpha[0]:.4g}, {self.alpha[-1]:.4g}], "
+                f"mu={self.mu.size} in [{self.mu[0]:.4g}, {self.mu[-1]:.4g}], "
+                f"boundaries={len(self.boundaries)}, special={len(self.special)}, "
+                f"n_paths={self.n_paths}, forces={self.P_fc is not None})")
+
+    def to_dataframe(self):
+        """One row per cell of the (mu, alpha) grid: ``alpha``, ``mu`` and the region
+        codes (and ``P_fc``, ``P_pf``, the masks with ``forces=True``); pandas is imported
+        only here. The boundaries are in ``boundaries``."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("to_dataframe() needs pandas: pip install pandas") from None
+        mu, alpha = np.meshgrid(self.mu, self.alpha, indexing="ij")
+        cols = {"model": np.repeat(self.model, mu.size), "alpha": alpha.reshape(-1),
+                "mu": mu.reshape(-1)}
+        for name in ("fc_region", "pf_region", "ga_region", "gr_region", "P_fc", "P_pf",
+                     "westergaard", "jkr_fc"):
+            value = getattr(self, name)
+            if value is not None:
+                cols[name] = np.asarray(value).reshape(-1)
+        return pd.DataFrame(cols)
+
 
 #: The accepted forms of alpha_range and mu_range, for messages
 _ALPHA_FORM = ("(lo, hi, n) with 1e-12 <= lo < hi <= 1e12 and n an integer in [2, 100000], "
@@ -139,13 +166,13 @@ def _range3(spec, name, lo_min, hi_max, n_max, form):
     """(lo, hi, n) validated: reals lo < hi in [lo_min, hi_max], an integer n in
     [2, n_max]; every error names `name`'s part and the expected form."""
     if not (isinstance(spec, (tuple, list)) and len(spec) == 3):
-        raise InvalidArgumentError(f"{name} = {spec!r}: expected {form}", _INVALID_ARGUMENT)
-    lo = _real_in(spec[0], f"{name} lo", lo_min, hi_max)
-    hi = _real_in(spec[1], f"{name} hi", lo_min, hi_max)
-    n = _count(spec[2], f"{name} n", 2, n_max)
+        raise InvalidArgumentError(f"{name} = {spec!r}: expected {form}", INVALID_ARGUMENT)
+    lo = real_in(spec[0], f"{name} lo", lo_min, hi_max)
+    hi = real_in(spec[1], f"{name} hi", lo_min, hi_max)
+    n = count_in(spec[2], f"{name} n", 2, n_max)
     if not lo < hi:
         raise InvalidArgumentError(f"{name} = {spec!r}: need lo < hi (expected {form})",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     return lo, hi, n
 
 
@@ -155,30 +182,30 @@ def _grid(spec, name):
     allocated (the errors name `name` and the expected form)."""
     if isinstance(spec, (str, bytes)) or spec is None:
         raise InvalidTypeError(f"{name} = {spec!r}: expected {_ALPHA_FORM}",
-                               _INVALID_ARGUMENT)
+                               INVALID_ARGUMENT)
     if isinstance(spec, tuple) and len(spec) == 3:
-        lo, hi, n = _range3(spec, name, _ALPHA_MIN, _ALPHA_MAX, _MAP_N_ALPHA_MAX,
+        lo, hi, n = _range3(spec, name, ALPHA_MIN, ALPHA_MAX, MAP_N_ALPHA_MAX,
                             _ALPHA_FORM)
         return np.geomspace(lo, hi, n)
     if np.ndim(spec) > 1:
         raise InvalidArgumentError(f"{name}: expected {_ALPHA_FORM}; got an array of shape "
-                                   f"{np.shape(spec)}", _INVALID_ARGUMENT)
-    if not 1 <= np.size(spec) <= _MAP_N_ALPHA_MAX:
+                                   f"{np.shape(spec)}", INVALID_ARGUMENT)
+    if not 1 <= np.size(spec) <= MAP_N_ALPHA_MAX:
         raise InvalidArgumentError(f"{name} holds {np.size(spec)} values: expected 1 to "
-                                   f"{_MAP_N_ALPHA_MAX} ({_ALPHA_FORM})", _INVALID_ARGUMENT)
-    values = _float_array(spec, name).reshape(-1)
+                                   f"{MAP_N_ALPHA_MAX} ({_ALPHA_FORM})", INVALID_ARGUMENT)
+    values = float_array(spec, name).reshape(-1)
     with np.errstate(invalid="ignore"):
-        outside = np.flatnonzero(~((values >= _ALPHA_MIN) & (values <= _ALPHA_MAX)))
+        outside = np.flatnonzero(~((values >= ALPHA_MIN) & (values <= ALPHA_MAX)))
         falling = np.flatnonzero(~(values[1:] > values[:-1])) + 1
     if outside.size:
         i = int(outside[0])
         raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is outside its valid "
-                                   f"range [{_ALPHA_MIN:g}, {_ALPHA_MAX:g}]", _INVALID_ARGUMENT)
+                                   f"range [{ALPHA_MIN:g}, {ALPHA_MAX:g}]", INVALID_ARGUMENT)
     if falling.size:
         i = int(falling[0])
         raise InvalidArgumentError(f"{name}[{i}] = {float(values[i])!r} is not greater than "
                                    f"{name}[{i - 1}] = {float(values[i - 1])!r}: the values "
-                                   "must be strictly increasing", _INVALID_ARGUMENT)
+                                   "must be strictly increasing", INVALID_ARGUMENT)
     return values
 
 
@@ -189,6 +216,18 @@ def _forces_chunk(args):
     return (np.asarray(res.P_fc, dtype=float), np.asarray(res.P_pf, dtype=float),
             np.asarray(res.fc_mechanism, dtype=np.int32),
             np.asarray(res.pf_mechanism, dtype=np.int32))
+
+
+def _force_grid(model, alpha, mu, executor, report):
+    """The critical forces of every alpha column over the mu grid (one chunk each, in
+    order), reporting each column as it comes back."""
+    parts = []
+    for part in iter_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
+                            executor):
+        parts.append(part)
+        if report is not None:
+            report.update(1)
+    return parts
 
 
 def _alpha_boundary(model, which, mu, a_lo, a_hi, m_lo, tol=1e-9):
@@ -244,9 +283,14 @@ def _vertical_boundaries(model, alpha, mu, regions, executor, tol=1e-9):
     return out
 
 
-def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60), *,
-                 forces: bool = False, scan_every: int = 20, executor=None,
-                 alpha_tol: float = 1e-9, control: str = "load") -> AdhesionMap:
+def adhesion_map(model: str, alpha_range: Union[Tuple[float, float, int], ArrayLike] = (
+                     0.01, 10.0, 200),
+                 mu_range: Tuple[float, float, int] = (1e-3, 1e3, 60), *,
+                 forces: bool = False, scan_every: int = 20,
+                 executor: Optional[Executor] = None, alpha_tol: float = 1e-9,
+                 control: str = "load",
+                 progress: Union[bool, Callable[[int, int], Any], None] = None
+                 ) -> AdhesionMap:
     """The adhesion map of the (alpha, mu) plane for "dw" or "md".
 
     Parameters
@@ -282,6 +326,12 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         Which boundaries: load control (codes 1xx, 2xx; default), gap control (3xx
         approach, 4xx retraction: doc/theory.md, "Adhesion map") or both. Gap control
         costs about as much again as load control for DW, 5-10 times more for MD.
+    progress : bool or callable, optional
+        True: a progress bar on stderr (tqdm when installed, else a plain line); a
+        callable: called as ``progress(done, total)``. The boundaries are one Fortran
+        call that reports nothing while it runs: it counts as one step, reported when it
+        ends; with ``forces=True`` each alpha column of the force grid is one more step,
+        reported as it comes back (the bisections in alpha are done before the last).
 
     Returns
     -------
@@ -297,29 +347,41 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
     InvalidTypeError
         A range, count or flag of the wrong type (a string, None, a bool as a count).
     """
-    code = _model_code(model)
+    code = model_code(model)
     if code not in (MODELS["dw"], MODELS["md"]):
         raise InvalidArgumentError(f"model = {model!r}: the adhesion map is for 'dw' or 'md' "
                                    "(westergaard and jkr have one mechanism each)",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     if not (isinstance(control, str) and control in CONTROLS):
         raise InvalidArgumentError(f"control = {control!r}: must be 'load', 'gap' or 'both'",
-                                   _INVALID_ARGUMENT)
+                                   INVALID_ARGUMENT)
     if not isinstance(forces, (bool, np.bool_)):
         raise InvalidTypeError(f"forces = {forces!r}: must be True or False",
-                               _INVALID_ARGUMENT)
-    every = _count(scan_every, "scan_every", 1, _C_INT_MAX)
-    alpha_tol = _real_in(alpha_tol, "alpha_tol", 1e-15, 0.1)
-    mu_lo, mu_hi, n_mu = _range3(mu_range, "mu_range", _MU_MIN, _MU_MAX, _MAP_N_MU_MAX,
+                               INVALID_ARGUMENT)
+    every = count_in(scan_every, "scan_every", 1, C_INT_MAX)
+    alpha_tol = real_in(alpha_tol, "alpha_tol", 1e-15, 0.1)
+    mu_lo, mu_hi, n_mu = _range3(mu_range, "mu_range", MU_MIN, MU_MAX, MAP_N_MU_MAX,
                                  _MU_FORM)
     alpha = _grid(alpha_range, "alpha_range")
-    if n_mu * alpha.size > _MAP_CELLS_MAX:
+    if n_mu * alpha.size > MAP_CELLS_MAX:
         raise InvalidArgumentError(
             f"mu_range n times the number of alpha values = {n_mu} x {alpha.size} = "
-            f"{n_mu * alpha.size}: the grid may hold at most {_MAP_CELLS_MAX} cells",
-            _INVALID_ARGUMENT)
+            f"{n_mu * alpha.size}: the grid may hold at most {MAP_CELLS_MAX} cells",
+            INVALID_ARGUMENT)
     capacity = 64 * (alpha.size + 64)
     args = (n_mu, capacity, code, alpha, mu_lo, mu_hi, every, CONTROLS[control])
+    report = make_progress(progress, 1 + (alpha.size if forces else 0), "adhesion_map")
+    try:
+        return _compute_map(model, code, alpha, mu_lo, mu_hi, n_mu, args, forces, executor,
+                            alpha_tol, control, report)
+    finally:
+        if report is not None:
+            report.close()
+
+
+def _compute_map(model, code, alpha, mu_lo, mu_hi, n_mu, args, forces, executor, alpha_tol,
+                 control, report):
+    """adhesion_map's work once its arguments are checked (`report`: a Progress or None)."""
     pending = None
     if forces and executor is not None:
         # the force grid on the executor while a helper thread continues the boundaries
@@ -327,15 +389,16 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         mu_guess = np.exp(np.log(mu_lo) + (np.log(mu_hi) - np.log(mu_lo))
                           * np.arange(n_mu) / (n_mu - 1))
         call = Background(_f.fa_adhesion_map, *args)
-        pending = (mu_guess, run_chunks(
-            _forces_chunk, [(str(model), float(a), mu_guess) for a in alpha], executor))
+        pending = (mu_guess, _force_grid(model, alpha, mu_guess, executor, report))
         out = call.result()
     else:
         out = call_interruptibly(_f.fa_adhesion_map, *args)   # Ctrl-C within 0.1 s
+    if report is not None:
+        report.update(1)
     (codes, a_out, m_out, curve, kinds, n_out, mu_grid, fc, pf, ga, gr, n_paths, status,
      message, sp_kind, sp_codes, sp_point, n_special) = out
-    if status != _OK:
-        _raise(status, message)
+    if status != OK:
+        raise_status(status, message)
     n = int(n_out)
     boundaries = []
     for c in range(1, int(curve[:n].max(initial=0)) + 1):
@@ -359,8 +422,8 @@ def adhesion_map(model, alpha_range=(0.01, 10.0, 200), mu_range=(1e-3, 1e3, 60),
         if pending is not None and np.array_equal(pending[0], mu):
             parts = pending[1]
         else:
-            parts = run_chunks(_forces_chunk, [(str(model), float(a), mu) for a in alpha],
-                               executor)
+            # (on an executor whose guessed grid missed: computed again, not counted again)
+            parts = _force_grid(model, alpha, mu, executor, report if pending is None else None)
         p_fc = np.stack([p[0] for p in parts], axis=1)
         p_pf = np.stack([p[1] for p in parts], axis=1)
         # every cell computed: the exact region grid replaces the one filled from curves

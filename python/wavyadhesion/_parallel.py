@@ -24,10 +24,14 @@ targets 10 ms, 50 ms, 200 ms (dask) and 50 ms (MPI and any other executor).
 from __future__ import annotations
 
 import math
+import sys
 import threading
+import time
+
+from ._errors import INVALID_ARGUMENT, InvalidTypeError
 
 __all__ = ["run_chunks", "iter_chunks", "chunk_seconds", "points_per_chunk", "Background",
-           "call_interruptibly"]
+           "call_interruptibly", "Progress", "make_progress"]
 
 # How often (s) a thread waiting for a Background call wakes up to let Python handle a
 # signal (Ctrl-C); POSIX interrupts the wait itself, this bounds it elsewhere.
@@ -142,3 +146,64 @@ def call_interruptibly(func, *args):
     """``func(*args)``, with Ctrl-C raising ``KeyboardInterrupt`` within 0.1 s even while
     it runs one long foreign call (see :class:`Background`)."""
     return Background(func, *args).result()
+
+
+class Progress:
+    """Progress of a sweep of `total` points, reported by :meth:`update` as chunks come
+    back (a long sweep's ``progress=`` argument):
+
+    - a callable: called as ``fn(done, total)`` after each chunk (and once with 0 first);
+    - True: a tqdm bar on stderr when tqdm is installed, else a line on stderr rewritten
+      at most every 0.2 s (and at the end).
+
+    Use :func:`make_progress`, which returns None for ``progress=None`` or False (no cost
+    at all then).
+    """
+
+    def __init__(self, progress, total: int, desc: str):
+        self.total, self.done, self.desc = int(total), 0, desc
+        self._fn = progress if callable(progress) else None
+        self._bar = None
+        self._last = 0.0
+        if self._fn is None:
+            try:
+                from tqdm.auto import tqdm
+            except ImportError:
+                tqdm = None
+            if tqdm is not None:
+                self._bar = tqdm(total=self.total, desc=desc, unit="pt")
+        self._report()
+
+    def _report(self):
+        if self._fn is not None:
+            self._fn(self.done, self.total)
+        elif self._bar is None:
+            now = time.monotonic()
+            if self.done in (0, self.total) or now - self._last >= 0.2:
+                self._last = now
+                end = "\n" if self.done == self.total else ""
+                sys.stderr.write(f"\r{self.desc}: {self.done}/{self.total}{end}")
+                sys.stderr.flush()
+
+    def update(self, n: int) -> None:
+        """`n` more points done."""
+        self.done += int(n)
+        if self._bar is not None:
+            self._bar.update(int(n))
+        self._report()
+
+    def close(self) -> None:
+        """End the report (a tqdm bar is closed; nothing else to do)."""
+        if self._bar is not None:
+            self._bar.close()
+
+
+def make_progress(progress, total: int, desc: str):
+    """A :class:`Progress` for ``progress=`` (True or a callable ``fn(done, total)``), or
+    None for None or False; anything else is refused naming ``progress``."""
+    if progress is None or progress is False:
+        return None
+    if progress is not True and not callable(progress):
+        raise InvalidTypeError(f"progress = {progress!r}: must be True, False, None or a "
+                               f"callable fn(done, total)", INVALID_ARGUMENT)
+    return Progress(progress, total, desc)

@@ -21,12 +21,24 @@ from __future__ import annotations
 
 import warnings
 
+from typing import TYPE_CHECKING, List, Optional, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import ArrayLike
 
-from ._core import MECHANISMS, WavyAdhesionError, critical_forces, jkr_load, \
-    load_path, trace_branch, westergaard_load
+from ._branch import trace_branch
+from ._equilibrium import jkr_load, westergaard_load
+from ._errors import WavyAdhesionError
+from ._loadpath import MECHANISMS, critical_forces, load_path
 
-__all__ = ["figure4", "figure6", "figures9_10", "mechanism_runs"]
+__all__ = ["figure4", "figure6", "figures9_10", "mechanism_runs", "adhesion_map"]
+
+if TYPE_CHECKING:                       # matplotlib is optional: names for annotations only
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from ._energy import EnergyLost
+    from ._map import AdhesionMap
 
 # Line styles of the paper: solid where the zone is inside the period (case 1) or a
 # jump from case 1, dash-dot for c* = 1/2 (case 2) or a gradual change, dashed for a
@@ -62,7 +74,8 @@ def _trace_or_warn(model, alpha, mu):
         return None
 
 
-def figure4(alphas=(0.3, 0.6), mus=(0.3, 1.0, 3.0, 10.0), *, models=("dw", "md")):
+def figure4(alphas: ArrayLike = (0.3, 0.6), mus: ArrayLike = (0.3, 1.0, 3.0, 10.0), *,
+            models: Sequence[str] = ("dw", "md")) -> "Figure":
     """Equilibrium P*-a* curves with a* < c* < 1/2 (paper Fig. 4).
 
     Parameters
@@ -111,7 +124,8 @@ def figure4(alphas=(0.3, 0.6), mus=(0.3, 1.0, 3.0, 10.0), *, models=("dw", "md")
     return fig
 
 
-def figure6(alpha=0.3, mus=(0.1, 1.0, 2.5, 3.0, 5.0), model="dw", paper_figure=6):
+def figure6(alpha: float = 0.3, mus: ArrayLike = (0.1, 1.0, 2.5, 3.0, 5.0), model: str = "dw",
+            paper_figure: int = 6) -> "Figure":
     """Contact and interaction-zone half-widths against the load (paper Fig. 6).
 
     a* in red and c* in black, solid where a* < c* < 1/2 and dash-dot where c* = 1/2
@@ -189,7 +203,7 @@ def _overlay_path(ax, model, alpha, mu):
     ax.text(path.P_fc, 0.44, "$P_{fc}$", ha="center", va="top", **label)
 
 
-def mechanism_runs(mechanism: np.ndarray):
+def mechanism_runs(mechanism: ArrayLike) -> List[Tuple[int, int, int]]:
     """Split an array of mechanism codes into runs: (start, stop, code) with stop one
     past the run's last index, extended by one point into the next run (so that
     consecutive pieces drawn with different styles meet)."""
@@ -203,7 +217,8 @@ def mechanism_runs(mechanism: np.ndarray):
     return runs
 
 
-def figures9_10(alphas=(0.3, 0.6, 1.0), mu=None, model="dw"):
+def figures9_10(alphas: ArrayLike = (0.3, 0.6, 1.0), mu: Optional[ArrayLike] = None,
+                model: str = "dw") -> Tuple["Figure", "Figure"]:
     """Critical forces against the transition parameter (paper Figs. 9 and 10).
 
     Line style by mechanism: dash-dot where full contact is reached (contact is lost)
@@ -368,8 +383,11 @@ def _draw_energy(ax, energy, levels, refine):
     return int(failed.sum())
 
 
-def adhesion_map(amap, ax=None, *, pull_off_levels=None, labels=True, energy=None,
-                 energy_levels=(0.1, 0.3, 0.5, 0.7, 0.9), energy_refine=6):
+def adhesion_map(amap: "AdhesionMap", ax: Optional["Axes"] = None, *,
+                 pull_off_levels: Optional[ArrayLike] = None, labels: bool = True,
+                 energy: Optional["EnergyLost"] = None,
+                 energy_levels: ArrayLike = (0.1, 0.3, 0.5, 0.7, 0.9),
+                 energy_refine: int = 6) -> "Figure":
     """Draw an :class:`~wavyadhesion.AdhesionMap` in the style of Johnson and Greenwood's
     map: log axes (alpha horizontal, mu vertical), one shade per region (full-contact and
     pull-off mechanism pair, labelled), the boundary curves as sharp lines (full contact

@@ -62,6 +62,26 @@ def critical(model, alpha, mu):
     return float(fields[-2]), float(fields[-1])
 
 
+def python_value(expression):
+    """str() of a Python expression over the installed package (``wa``), as a docs
+    quote of the Python interface (the package is imported only when a claim needs it)."""
+    import wavyadhesion as wa
+    return str(eval(expression, {"wa": wa}))
+
+
+@functools.lru_cache(maxsize=None)
+def example_output(script):
+    """What a python/examples script prints (run with the .venv's Python, its figure
+    written to a temporary directory)."""
+    import sys
+    import tempfile
+    with tempfile.TemporaryDirectory() as out:
+        res = subprocess.run([sys.executable, str(REPO / script), "--out", out],
+                             capture_output=True, text=True, timeout=300)
+    assert res.returncode == 0, res.stderr
+    return res.stdout
+
+
 def fmt12(x):
     return f"{x:.12f}"
 
@@ -78,6 +98,10 @@ CLAIMS = [
     ("doc/python.md", "{} ['branch_end', 'fold', 'fold', 'switch', 'branch_end']",
      lambda: branch_points("dw", "0.3", "5")),
     ("doc/python.md", "closed form at {} points", lambda: branch_points("westergaard")),
+    ("doc/python.md", "It prints\n\n```\n{}\n```", lambda: "\n".join(
+        example_output("python/examples/si_cycle.py").splitlines()[:3])),
+    ("doc/python.md", 'repr(wa.trace_branch("dw", 0.3, 5.0))` is\n`{}`',
+     lambda: python_value('repr(wa.trace_branch("dw", 0.3, 5.0))')),
     ("doc/user-guide.md", "closed forms ({} points", lambda: branch_points("westergaard")),
 ]
 
@@ -152,6 +176,15 @@ def test_docs_cite_only_the_repository(doc):
 def test_relative_links_exist(doc):
     for target in re.findall(r"\]\(([^)#:\s]+)(?:#[^)]*)?\)", doc.read_text()):
         assert (doc.parent / target).exists(), f"{doc.name} links to missing {target}"
+
+
+def test_si_example_quoted_verbatim():
+    """doc/python.md's SI example is the body of python/examples/si_cycle.py."""
+    script = (REPO / "python" / "examples" / "si_cycle.py").read_text()
+    body = script[script.index("    # --- the problem in SI units"):
+                  script.index("    try:\n        import matplotlib")]
+    body = "\n".join(line[4:] for line in body.rstrip().splitlines())
+    assert body in (REPO / "doc" / "python.md").read_text()
 
 
 def test_consumer_files_quoted_verbatim():
