@@ -77,7 +77,7 @@ static const char *family_name[N_FAMILY] = {
 static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 2,
                                       0, 0};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
-   cost 10-200 ms per alpha: about 50 calls each per 10^5, a quarter of them valid). */
+   cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid). */
 static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
                                              8, 96, 24, 16, 16, 16, 1, 1};
 
@@ -558,13 +558,13 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    static const int bad_control[] = {0, 4, -1, INT_MIN, INT_MAX};
    static const double bad_mu[] = {NAN, 0.0, -1.0, INFINITY, -INFINITY, 1e101};
    int k, what;
-   valid = valid && unif(r) < 0.5; /* valid maps are slow: a quarter of the calls */
+   valid = valid && unif(r) < 0.25; /* valid maps are slow: an eighth of the calls */
    what = valid ? -1 : below(r, 8);
    c->model = valid || unif(r) < 0.5 ? WA_MODEL_DW + below(r, 2) : gen_model(r);
    c->control = 1 + below(r, 3);
-   c->n_alpha = unif(r) < 0.7 ? 1 : 2 + below(r, 2);
+   c->n_alpha = unif(r) < 0.8 ? 1 : 2 + below(r, 2);
    for (k = 0; k < c->n_alpha; k++)
-      c->alphas[k] = unif(r) < 0.8 ? log_unif(r, 1e-3, 1e2) : log_unif(r, 1e-6, 1e4);
+      c->alphas[k] = unif(r) < 0.9 ? log_unif(r, 1e-2, 10.0) : log_unif(r, 1e-6, 1e4);
    for (k = 1; k < c->n_alpha; k++) /* increasing: sort the few values */
       if (c->alphas[k] <= c->alphas[k - 1]) {
          double t = c->alphas[k];
@@ -580,7 +580,7 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    c->null_mask = 0;
    switch (what) {
    case 0:
-      if (unif(r) < 0.5)
+      if (unif(r) < 0.5 && c->family == F_MAP_CONTROL)
          c->control = bad_control[below(r, 5)];
       else
          c->model = (const int[]){WA_MODEL_WESTERGAARD, WA_MODEL_JKR, -1, 4, INT_MIN}[below(r, 5)];
@@ -1241,15 +1241,15 @@ static void check_row_status(const call_t *c, int st) {
    alpha_out and mu_out in dbuf[0..1], *n_out in iscalar[0]. */
 static double map_alpha[4];
 
-static int run_map(const call_t *c, int control) {
+static int run_map(const call_t *c) {
    int n = c->n_alpha > 0 ? (c->n_alpha < 4 ? c->n_alpha : 4) : 0;
    fill_buffers(c->capacity);
    memcpy(map_alpha, c->alphas, n * sizeof(double));
    lib_call();
-   if (control == 0)
+   if (c->family == F_MAP)
       return wa_adhesion_map(c->model, c->n_alpha, P(0, map_alpha), c->mu_lo, c->mu_hi, c->capacity,
                              P(1, I(0)), P(2, D(0)), P(3, D(1)), P(4, IS(0)));
-   return wa_adhesion_map_control(c->model, control, c->n_alpha, P(0, map_alpha), c->mu_lo,
+   return wa_adhesion_map_control(c->model, c->control, c->n_alpha, P(0, map_alpha), c->mu_lo,
                                   c->mu_hi, c->capacity, P(1, I(0)), P(2, D(0)), P(3, D(1)),
                                   P(4, IS(0)));
 }
@@ -1766,8 +1766,8 @@ static int run_family(const call_t *c, int msg) {
    case F_LOAD_PATH: return run_path(c, msg);
    case F_CRITICAL_SWEEP: return run_sweep(c, msg);
    case F_SWEEP_STATUS: return run_sweep(c, msg);
-   case F_MAP: return run_map(c, 0);
-   case F_MAP_CONTROL: return run_map(c, c->control);
+   case F_MAP:
+   case F_MAP_CONTROL: return run_map(c);
    case F_EQUILIBRIUM_GAP: return run_equilibrium(c, msg);
    case F_ROOTS_GAP: return run_roots(c, msg);
    case F_TRACE_BRANCH_GAP: return run_branch(c, msg);
