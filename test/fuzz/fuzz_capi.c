@@ -17,11 +17,18 @@
  *  - nothing is written outside the arrays (guard elements around every buffer) or beyond
  *    the count; messages are NUL-terminated inside the buffer, untouched when the buffer
  *    is NULL or its capacity <= 0, "" on success, a reason on failure;
+ *  - messages: "" on WA_OK; on failure a whole message (fetched with a large buffer) that
+ *    names something, and for WA_INVALID_ARGUMENT an argument the caller passed out of range;
+ *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, ...), gap control's P_min
+ *    at most every P* of the retraction (gap_path, gap_law, P_pf), a jump keeps gbar*;
  *  - the same call twice (the plain and the _msg variant) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
  *    against wa_critical_forces, the closed-form loads against their formulas, wa_gap_critical
  *    against wa_gap_path (g_touch, interaction lost), wa_critical_forces (P_min <= P_pf) and
  *    wa_gap_law (P_retract at gbar*(P_min) is P_min; P* = 0 beyond the interaction).
+ * Violations of the known open defects of KNOWN_DEFECTS (an allow-list, removed as their
+ * fixes are merged) are counted and printed as KNOWN but do not fail the run (--strict:
+ * they do).
  * Every call runs in a forked child watched by the parent: a call that exceeds the time
  * limit is killed and reported as a hang, a crash as a crash; the run resumes after it.
  *
@@ -29,7 +36,8 @@
  * --seed S (WA_FUZZ_SEED, default 20260309), --timeout SECONDS (WA_FUZZ_TIMEOUT,
  * default 2), --max-hangs N (default 5: the run stops after N hangs; 0: never), --max-print N
  * (reproducers printed per kind and function, default 3), --only I (run call I alone,
- * print it and its result), --list (print every call, do not check).
+ * print it and its result), --list (print every call, do not check), --strict
+ * (WA_FUZZ_STRICT=1: ignore the allow-list).
  * Output: one block per violation (kind, call index, details, a one-line C reproducer),
  * then a summary (calls, time per function, statuses, violations by kind). Exit status
  * 0 when no severe violation was found, 1 otherwise, 2 on a usage error. */
@@ -150,7 +158,8 @@ static const struct {
     "mu 3e9): WA_INVALID_ARGUMENT 'c_star = 5.00000E-01 is outside its valid range' "
     "although the caller passed no c*"},
    {"gap-pmin-small-alpha",
-    "wa_gap_critical at alpha < 1e-3: P_min above P_pf (e.g. wa_gap_critical(2, "
+    "wa_gap_critical at alpha < 2e-3: P_min above P_pf or a P* of the retraction (e.g. "
+    "wa_gap_critical(2, "
     "3.2953421004685887e-05, 843.70633645969394, v): P_min -4.91305e-7, P_pf -4.99163e-7)"}};
 
 /* --------------------------------------------------------------- shared state */
@@ -1387,10 +1396,10 @@ static int run_gap_path(const call_t *c, int msg) {
 
 /* Tolerance of "a jump keeps gbar*" (relative). The landing state is solved for the start's
    gbar* to 1e-15 in its chain parameter (a*), and its gbar* recomputed from it, so the two
-   agree to rounding times the conditioning of gbar*(a*): a few ulps mostly, up to ~5e-9
-   where gbar*(a*) is steep (JKR at alpha ~ 1e9-1e11 landing near a* = 1/2, MD at small
-   alpha near full contact). The summary prints the largest difference seen. */
-#define GBAR_JUMP_TOL 1e-7
+   agree to rounding times the conditioning of gbar*(a*): a few ulps mostly, 9.4e-8 at most
+   in 2e6 calls (21167 jumps; JKR at alpha 7.7e11, landing near a* = 1/2 where gbar*(a*) is
+   steep). The summary prints the largest difference seen. */
+#define GBAR_JUMP_TOL 1e-6
 
 static int ok_gap_event(int e) {
    return (e >= WA_GAP_EVENT_JUMP_START && e <= WA_GAP_EVENT_FULL_CONTACT_LEFT) ||
@@ -2060,7 +2069,11 @@ static void run_one(long index) {
    char msg1[MSG_REAL];
 
    gen_call(index, &c);
-   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL ? 10 : 1) * opt_timeout;
+   /* the time limit: the maps 10 times it, a sweep once per row (each row is a load path) */
+   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL ? 10
+                 : (c.family == F_CRITICAL_SWEEP || c.family == F_SWEEP_STATUS) && c.n_mu > 1
+                    ? c.n_mu
+                    : 1) * opt_timeout;
    full_msg[0] = 0;
    fn = 2 * c.family + c.msg;
    if (opt_list) {
