@@ -2115,6 +2115,7 @@ static void run_one(long index) {
       memcpy(msg1, mbuf, sizeof mbuf);
       if (unif(&r) < 0.25) {
          int other = c.msg;
+         shm->started = now(); /* each library call of the repeat has its own time limit */
          call_t c2 = c;
          if (unif(&r) < 0.5 && has_msg[c.family] == 1) other = !c.msg;
          c2.msg = other;
@@ -2132,6 +2133,7 @@ static void run_one(long index) {
       }
       /* a failure: its whole message (plain variants too) must name what failed */
       if (st != WA_OK && has_msg[c.family]) {
+         shm->started = now(); /* a fresh time limit for the fetch */
          fetch_message(&c, st, (char *)msg1 + GUARD);
          check_full_message(&c, st, invalid);
          if (opt_only >= 0) printf("   whole message: '%s'\n", full_msg);
