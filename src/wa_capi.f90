@@ -135,7 +135,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call equilibrium_core(model, alpha, mu, a_star, c_star, p_star, zone_case, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_equilibrium_msg
 
    !> int wa_roots(model, alpha, mu, a_star, capacity, c_star[], P_star[], zone_case[],
@@ -198,7 +198,7 @@ contains
       character(len=msg_len) :: msg
       call roots_core(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
          n_roots, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_roots_msg
 
    !> int wa_trace_branch(model, alpha, mu, capacity, a_star[], c_star[], P_star[],
@@ -271,7 +271,7 @@ contains
       character(len=msg_len) :: msg
       call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star], &
          [zone_case, stable, event], n_points, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_trace_branch_msg
 
    !> int wa_critical_forces(model, alpha, mu, *P_fc, *P_pf): the load at which full
@@ -315,7 +315,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call critical_core(model, alpha, mu, p_fc, p_pf, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_critical_forces_msg
 
    !> int wa_load_path(model, alpha, mu, capacity, stage[], event[], a_star[], c_star[],
@@ -393,7 +393,7 @@ contains
       character(len=msg_len) :: msg
       call path_core(model, alpha, mu, capacity, [stage, event], [a_star, c_star, p_star], &
          n_events, p_fc, p_pf, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_load_path_msg
 
    !> int wa_critical_sweep(model, alpha, n_mu, mu[], P_fc[], P_pf[], fc_mechanism[],
@@ -455,7 +455,7 @@ contains
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
          c_null_ptr, .false., status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_critical_sweep_msg
 
    !> int wa_critical_sweep_status(..., int *row_status, char *message,
@@ -491,7 +491,7 @@ contains
       character(len=msg_len) :: msg
       call sweep_core(model, alpha, n_mu, mu, [p_fc, p_pf], [fc_mechanism, pf_mechanism], &
          row_status, .true., status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_critical_sweep_status
 
    !> int wa_profile(model, alpha, mu, a_star, c_star, n, x_star[], traction[], gap[]):
@@ -555,7 +555,7 @@ contains
       character(len=msg_len) :: msg
       call profile_core(model, alpha, mu, a_star, c_star, n, x_star, traction, gap, status, &
          msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_profile_msg
 
    !> int wa_equilibrium_gap(model, alpha, mu, a_star, *c_star, *P_star, *zone_case,
@@ -613,7 +613,7 @@ contains
       character(len=msg_len) :: msg
       call equilibrium_core(model, alpha, mu, a_star, c_star, p_star, zone_case, status, msg, &
          gbar)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_equilibrium_gap_msg
 
    !> int wa_roots_gap(model, alpha, mu, a_star, capacity, c_star[], P_star[],
@@ -679,7 +679,7 @@ contains
       character(len=msg_len) :: msg
       call roots_core(model, alpha, mu, a_star, capacity, c_star, p_star, zone_case, &
          n_roots, status, msg, gbar)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_roots_gap_msg
 
    !> int wa_trace_branch_gap(model, alpha, mu, capacity, a_star[], c_star[], P_star[],
@@ -755,7 +755,7 @@ contains
       character(len=msg_len) :: msg
       call branch_core(model, alpha, mu, capacity, [a_star, c_star, p_star, gbar], &
          [zone_case, stable, event], n_points, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_trace_branch_gap_msg
 
    !> const char *wa_status_message(int status): a static NUL-terminated text, never
@@ -1347,9 +1347,14 @@ contains
       out = int(values, c_int)
    end subroutine store_ints
 
-   !> Copy msg (trailing blanks dropped), truncated to capacity - 1 bytes plus a NUL,
-   !> into a C buffer; nothing when the buffer is NULL or capacity <= 0.
-   subroutine copy_message(msg, buffer, capacity)
+   !> Copy the message of a call that returned `status` into a C buffer: "" on WA_OK, else
+   !> msg (trailing blanks dropped), truncated to capacity - 1 bytes plus a NUL; nothing
+   !> when the buffer is NULL or capacity <= 0. The Fortran routines only promise errmsg
+   !> on failure: one that recovers from an inner failure (a retry that succeeds) returns
+   !> wa_ok with the inner message still in errmsg, which the header's "" on success must
+   !> not pass on (wa_gap_law_msg did, e.g. "gap_path: no equilibrium near the branch").
+   subroutine copy_message(status, msg, buffer, capacity)
+      integer(c_int), intent(in) :: status
       character(len=*), intent(in) :: msg
       type(c_ptr), intent(in) :: buffer
       integer(c_int), intent(in) :: capacity
@@ -1359,6 +1364,7 @@ contains
       if (.not. c_associated(buffer) .or. capacity <= 0) return
       call c_f_pointer(buffer, out, [capacity])
       n = min(len_trim(msg), int(capacity) - 1)
+      if (status == wa_ok) n = 0
       do i = 1, n
          out(i) = msg(i:i)
       end do
@@ -1511,7 +1517,7 @@ contains
       character(len=msg_len) :: msg
       call gap_path_core(model, alpha, mu, capacity, [stage, event, zone_case], &
          [a_star, c_star, p_star, gbar], n_events, [w_star, w_fraction, g_touch], status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_gap_path_msg
 
    !> int wa_gap_law(model, alpha, mu, n, gbar[], P_approach[], P_retract[],
@@ -1566,7 +1572,7 @@ contains
       character(len=msg_len) :: msg
       call gap_law_core(model, alpha, mu, n, gbar, [p_approach, p_retract, dpdg_approach, &
          dpdg_retract], status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_gap_law_msg
 
    !> int wa_gap_critical(model, alpha, mu, values[WA_GAP_CRITICAL_COUNT]): the critical
@@ -1607,7 +1613,7 @@ contains
       integer(c_int) :: status
       character(len=msg_len) :: msg
       call gap_critical_core(model, alpha, mu, values, status, msg)
-      call copy_message(msg, message, message_capacity)
+      call copy_message(status, msg, message, message_capacity)
    end function capi_gap_critical_msg
 
    !> Validate, follow the gap-controlled cycle, write min(n, capacity) events, n and the

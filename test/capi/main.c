@@ -1250,6 +1250,35 @@ static void test_gap_law(void) {
    CHECK(wa_gap_law(5, 0.3, 1.0, 2, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT, "model 5");
 }
 
+/* Regression (issue item 5a): wa_gap_law_msg returned WA_OK with a stale message ("gap_path:
+   no equilibrium near the branch at a point of the quadrature") where the library retried a
+   failed inner solve successfully; the fuzzer found it (3 in 2.2e6 calls). On WA_OK the
+   message is "", and the values are those of the plain wa_gap_law and, at gbar* = 0, the
+   full-contact load of wa_gap_path's cycle. */
+static void test_gap_law_message_on_ok(void) {
+   const double alpha = 1.4489361929536397, mu = 21754883.931522951;
+   double gb[3] = {0.0, 0.5, 1.2}, pa[3], pr[3], da[3], dr[3], pa2[3], pr2[3], da2[3], dr2[3];
+   double a[64], c[64], p[64], g[64], w, wf, gt;
+   int stage[64], ev[64], zc[64], n = 0, k, st, st2;
+   char msg[256];
+   memset(msg, 'x', sizeof msg);
+   st = wa_gap_law_msg(WA_MODEL_DW, alpha, mu, 3, gb, pa, pr, da, dr, msg, sizeof msg);
+   CHECK(st == WA_OK && msg[0] == '\0', "gap law at DW (%.17g, %.17g): st %d message '%.80s'",
+         alpha, mu, st, msg);
+   memset(msg, 'x', sizeof msg);
+   st = wa_gap_law_msg(WA_MODEL_DW, alpha, mu, 0, NULL, NULL, NULL, NULL, NULL, msg, sizeof msg);
+   CHECK(st == WA_OK && msg[0] == '\0', "gap law n = 0: st %d message '%.80s'", st, msg);
+   st2 = wa_gap_law(WA_MODEL_DW, alpha, mu, 3, gb, pa2, pr2, da2, dr2);
+   CHECK(st2 == WA_OK && !memcmp(pa, pa2, sizeof pa) && !memcmp(pr, pr2, sizeof pr) &&
+            !memcmp(da, da2, sizeof da) && !memcmp(dr, dr2, sizeof dr),
+         "gap law: _msg and plain differ (st %d)", st2);
+   st = wa_gap_path(WA_MODEL_DW, alpha, mu, 64, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   for (k = 0; k < n && ev[k] != WA_GAP_EVENT_FULL_CONTACT_REACHED; k++) continue;
+   CHECK(st == WA_OK && k < n && g[k] == 0.0 && pa[0] == p[k] && pr[0] == p[k],
+         "gap law at gbar* 0: %.17g %.17g, full contact reached at P* %.17g", pa[0], pr[0],
+         k < n ? p[k] : NAN);
+}
+
 static void test_gap_critical(void) {
    double v[WA_GAP_CRITICAL_COUNT], a[16], c[16], p[16], g[16], w, wf, gt, fc, pf, gb[1],
       pa[1], pr[1], da[1], dr[1];
@@ -1338,6 +1367,7 @@ int main(void) {
    test_profile();
    test_gap_path();
    test_gap_law();
+   test_gap_law_message_on_ok();
    test_gap_critical();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;

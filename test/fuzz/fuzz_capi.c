@@ -17,11 +17,18 @@
  *  - nothing is written outside the arrays (guard elements around every buffer) or beyond
  *    the count; messages are NUL-terminated inside the buffer, untouched when the buffer
  *    is NULL or its capacity <= 0, "" on success, a reason on failure;
+ *  - messages: "" on WA_OK; on failure a whole message (fetched with a large buffer) that
+ *    names something, and for WA_INVALID_ARGUMENT an argument the caller passed out of range;
+ *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, ...), gap control's P_min
+ *    at most every P* of the retraction (gap_path, gap_law, P_pf), a jump keeps gbar*;
  *  - the same call twice (the plain and the _msg variant) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
  *    against wa_critical_forces, the closed-form loads against their formulas, wa_gap_critical
  *    against wa_gap_path (g_touch, interaction lost), wa_critical_forces (P_min <= P_pf) and
  *    wa_gap_law (P_retract at gbar*(P_min) is P_min; P* = 0 beyond the interaction).
+ * Violations of the known open defects of KNOWN_DEFECTS (an allow-list, removed as their
+ * fixes are merged) are counted and printed as KNOWN but do not fail the run (--strict:
+ * they do).
  * Every call runs in a forked child watched by the parent: a call that exceeds the time
  * limit is killed and reported as a hang, a crash as a crash; the run resumes after it.
  *
@@ -29,7 +36,8 @@
  * --seed S (WA_FUZZ_SEED, default 20260309), --timeout SECONDS (WA_FUZZ_TIMEOUT,
  * default 2), --max-hangs N (default 5: the run stops after N hangs; 0: never), --max-print N
  * (reproducers printed per kind and function, default 3), --only I (run call I alone,
- * print it and its result), --list (print every call, do not check).
+ * print it and its result), --list (print every call, do not check), --strict
+ * (WA_FUZZ_STRICT=1: ignore the allow-list).
  * Output: one block per violation (kind, call index, details, a one-line C reproducer),
  * then a summary (calls, time per function, statuses, violations by kind). Exit status
  * 0 when no severe violation was found, 1 otherwise, 2 on a usage error. */
@@ -62,7 +70,7 @@ enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
    F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION,
    F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, F_GAP_PATH, F_GAP_LAW,
-   F_GAP_CRITICAL, N_FAMILY
+   F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, N_FAMILY
 };
 /* Function ids: a family and whether the _msg variant is called. */
 #define N_FN (2 * N_FAMILY)
@@ -70,28 +78,40 @@ static const char *family_name[N_FAMILY] = {
    "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
    "wa_version", "wa_equilibrium_gap", "wa_roots_gap", "wa_trace_branch_gap", "wa_profile",
-   "wa_gap_path", "wa_gap_law", "wa_gap_critical"};
-static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1};
-/* Relative frequency of each family (the slow ones are rarer, see doc/testing.md). */
-static const int family_weight[N_FAMILY] = {12, 16, 72, 60, 3, 3, 3, 2, 6, 1, 24, 20, 1, 12,
-                                             3, 2, 2};
+   "wa_gap_path", "wa_gap_law", "wa_gap_critical", "wa_critical_sweep_status",
+   "wa_adhesion_map", "wa_adhesion_map_control"};
+/* 0: no _msg variant; 1: a plain and a _msg variant (half the calls each); 2: the
+   function always takes a message (wa_critical_sweep_status, counted as its "_msg" id). */
+static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 2,
+                                      0, 0};
+/* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
+   cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid). */
+static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
+                                             8, 96, 24, 16, 16, 16, 1, 1};
+
+/* The printed name of function id fn. */
+static const char *fn_suffix(int fn) {
+   return fn % 2 && has_msg[fn / 2] == 1 ? "_msg" : "";
+}
 
 /* ----------------------------------------------------------- violation kinds */
 
 enum {
    K_HANG, K_CRASH, K_CHILD_EXIT, K_STATUS, K_INVALID_ACCEPTED, K_NONFINITE, K_STATE,
    K_COUNT, K_FAIL_OUTPUT, K_OVERRUN, K_MESSAGE, K_NONDET, K_INCONSISTENT, K_VALUE,
-   K_VALID_REJECTED, K_BEYOND, K_MESSAGE_TEXT, K_RANGE_MESSAGE, K_ROOTS_VALUE, K_FAILED_VALID, N_KIND
+   K_VALID_REJECTED, K_STALE_MESSAGE, K_MISSING_MESSAGE, K_WRONG_ARGUMENT, K_PMIN, K_JUMP_GBAR,
+   K_ORDER, K_BEYOND, K_RANGE_MESSAGE, K_ROOTS_VALUE, K_FAILED_VALID, N_KIND
 };
 static const char *kind_name[N_KIND] = {
    "hang", "crash", "child-exit", "undocumented-status", "invalid-accepted",
    "nonfinite-with-ok", "bad-state-with-ok", "count", "failure-outputs", "overrun",
    "message-buffer", "nondeterministic", "inconsistent", "wrong-value", "valid-rejected",
-   "write-beyond-count", "message-text", "range-message", "roots-vs-equilibrium-value",
-   "failure-in-domain"};
+   "message-on-ok", "message-missing", "invalid-names-wrong-argument", "pmin-above-retraction",
+   "jump-gbar-differs", "order-contract", "write-beyond-count", "range-message",
+   "roots-vs-equilibrium-value", "failure-in-domain"};
 /* Severe kinds make the exit status 1. */
-static const int kind_severe[N_KIND] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
-                                        0, 0, 0, 0, 0};
+static const int kind_severe[N_KIND] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+                                        1, 1, 1, 0, 0, 0, 0};
 static const char *kind_help[N_KIND] = {
    "a call exceeded the time limit",
    "a call was killed by a signal",
@@ -104,15 +124,43 @@ static const char *kind_help[N_KIND] = {
    "on failure an output is not what the header says (NaN, 0, -1)",
    "a guard element outside a caller's buffer was written",
    "a message not NUL-terminated in its buffer, or written when NULL/capacity <= 0",
-   "the same call twice gave different bits",
-   "two functions disagree (roots/equilibrium, sweep/path/critical forces)",
+   "the same call twice gave different bits (messages included)",
+   "two functions disagree (roots/equilibrium, sweep/path/critical forces, the maps)",
    "a closed-form load differs from its formula",
    "arguments valid by the header (domain included) refused with WA_INVALID_ARGUMENT",
+   "WA_OK with a message that is not empty (a stale message)",
+   "a failure with an empty message, or one that names nothing",
+   "WA_INVALID_ARGUMENT naming an argument the caller did not pass or passed in range",
+   "gap control: P_min above P_pf or above a P* of the retraction (gap_path, gap_law)",
+   "gap control: a jump's start and end gbar* differ",
+   "a documented ordering broken (P_fc >= P_pf, g_contact <= g_touch, ...)",
    "an array element beyond the count (within the capacity) was written",
-   "a message empty on failure or not empty on success",
    "a finite argument rejected with a message claiming the range reaches inf",
    "wa_roots' first state differs from wa_equilibrium's beyond 1e-9",
    "WA_NO_SOLUTION, WA_NOT_CONVERGED or WA_NUMERICAL_ERROR inside the domain (a report)"};
+
+/* ------------------------------------------------- known open defects (allow-list)
+
+   KNOWN_DEFECTS: reproducer classes of open defects that are being fixed on other
+   branches. A violation of such a class is counted and printed as KNOWN (with the
+   class name) but does not fail the run. Each entry names the kind it excuses; a
+   predicate (known_class below) recognises the class from the call and the library's
+   message, narrowly, so that any other violation of the same kind still fails. Only
+   classes seen in the long run (doc/testing.md) are listed. Remove an entry once its fix
+   is merged (then its reproducers fail the run again); --strict (WA_FUZZ_STRICT=1)
+   ignores the list. */
+enum { KD_MD_CSTAR_INVALID, KD_GAP_PMIN_SMALL_ALPHA, N_KNOWN };
+static const struct {
+   const char *name, *what;
+} known_defect[N_KNOWN] = {
+   {"md-c_star-invalid",
+    "MD at large alpha and mu (e.g. alpha 2e10-5e11, mu 1e12-3e14; seen from alpha 1.8e7, "
+    "mu 3e9): WA_INVALID_ARGUMENT 'c_star = 5.00000E-01 is outside its valid range' "
+    "although the caller passed no c*"},
+   {"gap-pmin-small-alpha",
+    "wa_gap_critical at alpha < 2e-3: P_min above P_pf or a P* of the retraction (e.g. "
+    "wa_gap_critical(2, "
+    "3.2953421004685887e-05, 843.70633645969394, v): P_min -4.91305e-7, P_pf -4.99163e-7)"}};
 
 /* --------------------------------------------------------------- shared state */
 
@@ -128,6 +176,11 @@ typedef struct {
    long viol[N_KIND];
    long viol_fn[N_KIND][N_FN];
    long viol_printed[N_KIND][N_FN];
+   long known[N_KNOWN];                /* violations excused by the allow-list */
+   long known_printed[N_KNOWN];
+   volatile double limit;              /* time limit of the call under way */
+   double max_jump_rel;                /* largest relative gbar* difference of a jump */
+   long n_jumps, max_jump_call;
    long failed_valid[4][N_FAMILY][6]; /* failure-in-domain by model, family, status */
 } shared_t;
 
@@ -136,7 +189,10 @@ static unsigned long long opt_seed = 20260309ULL;
 static long opt_calls = 100000, opt_only = -1;
 static double opt_timeout = 2.0;
 static long opt_max_hangs = 5, opt_max_print = 3;
-static int opt_list = 0;
+static int opt_list = 0, opt_strict = 0;
+/* The whole message of the call under way (fetched with a large buffer after a failure;
+   "" before): known_class and the message checks read it. */
+static char full_msg[1024];
 
 static double now(void) {
    struct timespec ts;
@@ -256,6 +312,8 @@ typedef struct {
    double mus[8];
    double cs;       /* wa_profile: c* (unless `pick` >= 0: a root of wa_roots_gap) */
    int pick, x_bad; /* wa_profile: root index to take c* from; an x* not finite */
+   int control, n_alpha; /* the maps: control (wa_adhesion_map_control), alpha count */
+   double alphas[4], mu_lo, mu_hi;
    char repro[1024];
 } call_t;
 
@@ -298,17 +356,27 @@ static int *IS(int k) { return &iscalar[k][GUARD]; }
 
 static int in_child = 0;
 
+static int known_class(const call_t *c, int kind);
+
 static void violation(const call_t *c, int kind, const char *fmt, ...) {
-   int fn = 2 * c->family + c->msg;
+   int fn = 2 * c->family + c->msg, kd = opt_strict ? -1 : known_class(c, kind);
+   long *printed;
    va_list ap;
-   shm->viol[kind]++;
-   shm->viol_fn[kind][fn]++;
-   if (opt_list) return;
-   if (shm->viol_printed[kind][fn] >= opt_max_print && opt_only < 0) return;
-   shm->viol_printed[kind][fn]++;
-   printf("VIOLATION %s%s (call %ld, %s%s): ", kind_name[kind],
-          kind_severe[kind] ? "" : " [mild]", c->index, family_name[c->family],
-          c->msg ? "_msg" : "");
+   if (kd >= 0) { /* an open defect of the allow-list: counted, printed, not failing */
+      shm->known[kd]++;
+      printed = &shm->known_printed[kd];
+   } else {
+      shm->viol[kind]++;
+      shm->viol_fn[kind][fn]++;
+      printed = &shm->viol_printed[kind][fn];
+   }
+   if (opt_list || (*printed >= opt_max_print && opt_only < 0)) return;
+   (*printed)++;
+   if (kd >= 0)
+      printf("KNOWN %s (%s, ", known_defect[kd].name, kind_name[kind]);
+   else
+      printf("VIOLATION %s%s (", kind_name[kind], kind_severe[kind] ? "" : " [mild]");
+   printf("call %ld, %s%s): ", c->index, family_name[c->family], fn_suffix(fn));
    va_start(ap, fmt);
    vprintf(fmt, ap);
    va_end(ap);
@@ -440,6 +508,28 @@ static void make_repro(call_t *c) {
       sprintf(c->repro, "wa_gap_critical%s(%d, %s, %s, %s%s)", sfx, c->model, cd(a1, c->alpha),
               cd(a2, c->mu), ptr_name(c, 0, "values"), msgpart);
       break;
+   case F_MAP:
+   case F_MAP_CONTROL: {
+      char ctl[32] = "", al[200] = "";
+      if (c->family == F_MAP_CONTROL) sprintf(ctl, ", %s", ci(a1, c->control));
+      if (c->null_mask & 1u) {
+         strcpy(al, "NULL");
+      } else {
+         strcpy(al, "(double[]){");
+         for (k = 0; k < c->n_alpha && k < 4; k++) {
+            strcat(al, cd(a3, c->alphas[k]));
+            if (k + 1 < c->n_alpha && k < 3) strcat(al, ", ");
+         }
+         strcat(al, "}");
+      }
+      sprintf(c->repro, "wa_adhesion_map%s(%d%s, %s, %s, %s, %s, %s, %s, %s, %s, %s)",
+              c->family == F_MAP_CONTROL ? "_control" : "", c->model, ctl, ci(cap, c->n_alpha),
+              al, cd(a1, c->mu_lo), cd(a2, c->mu_hi), ci(mcap, c->capacity),
+              ptr_name(c, 1, "code"), ptr_name(c, 2, "a"), ptr_name(c, 3, "m"),
+              ptr_name(c, 4, "&n"));
+      break;
+   }
+   case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP:
       if (c->n_mu > 0 && !(c->null_mask & 1u)) {
          strcpy(mu, "(double[]){");
@@ -451,10 +541,16 @@ static void make_repro(call_t *c) {
       } else {
          strcpy(mu, ptr_name(c, 0, "mu"));
       }
-      sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
-              c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
-              ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
-              msgpart);
+      if (c->family == F_SWEEP_STATUS)
+         sprintf(c->repro, "wa_critical_sweep_status(%d, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+                 c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
+                 ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
+                 ptr_name(c, 5, "row_status"), msgpart);
+      else
+         sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+                 c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
+                 ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
+                 msgpart);
       break;
    }
 }
@@ -462,6 +558,51 @@ static void make_repro(call_t *c) {
 /* ------------------------------------------------------------- generation */
 
 static int valid_a(double x);
+
+/* The arguments of a map: 1-3 increasing alpha (mostly typical: a map costs 10-200 ms per
+   alpha), a mu range; invalid calls break one argument (model, control, n_alpha, an alpha,
+   their order, the mu range, the capacity, a pointer). Pointer bits: 0 alpha, 1
+   boundary_code, 2 alpha_out, 3 mu_out, 4 n_out. */
+static void gen_map(rng_t *r, call_t *c, int valid) {
+   static const int bad_control[] = {0, 4, -1, INT_MIN, INT_MAX};
+   static const double bad_mu[] = {NAN, 0.0, -1.0, INFINITY, -INFINITY, 1e101};
+   int k, what;
+   valid = valid && unif(r) < 0.25; /* valid maps are slow: an eighth of the calls */
+   what = valid ? -1 : below(r, 8);
+   c->model = valid || unif(r) < 0.5 ? WA_MODEL_DW + below(r, 2) : gen_model(r);
+   c->control = 1 + below(r, 3);
+   c->n_alpha = unif(r) < 0.8 ? 1 : 2 + below(r, 2);
+   for (k = 0; k < c->n_alpha; k++)
+      c->alphas[k] = unif(r) < 0.9 ? log_unif(r, 1e-2, 10.0) : log_unif(r, 1e-6, 1e4);
+   for (k = 1; k < c->n_alpha; k++) /* increasing: sort the few values */
+      if (c->alphas[k] <= c->alphas[k - 1]) {
+         double t = c->alphas[k];
+         c->alphas[k] = c->alphas[k - 1];
+         c->alphas[k - 1] = t;
+         k = 0;
+      }
+   for (k = 1; k < c->n_alpha; k++)
+      if (!(c->alphas[k] > c->alphas[k - 1])) c->alphas[k] = nextafter(c->alphas[k - 1], 1e300);
+   c->mu_lo = log_unif(r, 1e-3, 10.0);
+   c->mu_hi = c->mu_lo * log_unif(r, 1.5, 1e4);
+   c->capacity = unif(r) < 0.7 ? 64 + below(r, 200) : below(r, 6);
+   c->null_mask = 0;
+   switch (what) {
+   case 0:
+      if (unif(r) < 0.5 && c->family == F_MAP_CONTROL)
+         c->control = bad_control[below(r, 5)];
+      else
+         c->model = (const int[]){WA_MODEL_WESTERGAARD, WA_MODEL_JKR, -1, 4, INT_MIN}[below(r, 5)];
+      break;
+   case 1: c->n_alpha = unif(r) < 0.5 ? 0 : (unif(r) < 0.5 ? -1 : INT_MIN); break;
+   case 2: c->alphas[below(r, c->n_alpha)] = special(r); break;
+   case 3: c->n_alpha = 2; c->alphas[1] = unif(r) < 0.5 ? c->alphas[0] : 0.5 * c->alphas[0]; break;
+   case 4: if (unif(r) < 0.5) c->mu_lo = bad_mu[below(r, 6)]; else c->mu_hi = bad_mu[below(r, 6)]; break;
+   case 5: c->mu_hi = unif(r) < 0.5 ? c->mu_lo : 0.5 * c->mu_lo; break;
+   case 6: c->capacity = unif(r) < 0.5 ? -1 : INT_MIN; break;
+   case 7: c->null_mask = unif(r) < 0.8 ? 1u << below(r, 5) : (unsigned)next_u64(r) & 0x1Fu; break;
+   }
+}
 
 static void gen_call(long index, call_t *c) {
    rng_t r;
@@ -478,7 +619,7 @@ static void gen_call(long index, call_t *c) {
       u -= family_weight[k];
    }
    c->family = k;
-   c->msg = has_msg[k] && unif(&r) < 0.5;
+   c->msg = has_msg[k] == 2 || (has_msg[k] == 1 && unif(&r) < 0.5);
    valid = unif(&r) < 0.5; /* half the calls: every argument valid, pointers too */
    c->model = valid ? below(&r, 4) : gen_model(&r);
    if (((k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP) || k == F_TRACE_BRANCH_GAP ||
@@ -509,13 +650,16 @@ static void gen_call(long index, call_t *c) {
       c->null_mask = 0;
       if (c->capacity < 0) c->capacity = 64;
    }
-   if (k == F_CRITICAL_SWEEP) {
+   if (k == F_CRITICAL_SWEEP || k == F_SWEEP_STATUS) {
       u2 = unif(&r);
       c->n_mu = valid && u2 < 0.15 ? 1 : u2 < 0.1 ? 0 : u2 < 0.15 ? (unif(&r) < 0.5 ? -1 : INT_MIN) : 1 + below(&r, 4);
       for (u = 0; u < 8; u++)
          c->mus[u] = unif(&r) < 0.7 || valid ? log_unif(&r, 1e-2, 30.0)
                                              : gen_param(&r, 1e-3, 1e3, 1);
    }
+   if (k == F_SWEEP_STATUS && c->null_mask)  /* six pointers: mu, 4 outputs, row_status */
+      c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 6) : (unsigned)next_u64(&r) & 0x3Fu;
+   if (k == F_MAP || k == F_MAP_CONTROL) gen_map(&r, c, valid);
    if (k == F_GAP_PATH && c->null_mask)       /* eleven pointers */
       c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 11) : (unsigned)next_u64(&r) & 0x7FFu;
    if (k == F_GAP_LAW) {
@@ -645,9 +789,9 @@ static void check_message(const call_t *c, int st, int expect_valid_rejection) {
             break;
          }
    if (st == WA_OK && len != 0)
-      violation(c, K_MESSAGE_TEXT, "WA_OK with message '%s'", (char *)m);
+      violation(c, K_STALE_MESSAGE, "WA_OK with message '%s'", (char *)m);
    if (st != WA_OK && len == 0 && cap > 1)
-      violation(c, K_MESSAGE_TEXT, "status %d with an empty message", st);
+      violation(c, K_MISSING_MESSAGE, "status %d with an empty message", st);
    if (st == WA_INVALID_ARGUMENT && expect_valid_rejection &&
        (strstr((char *)m, "inf)") || strstr((char *)m, "inf]")))
       violation(c, K_RANGE_MESSAGE, "finite arguments rejected: '%s'", (char *)m);
@@ -660,7 +804,8 @@ static void check_status(const call_t *c, int st, int allowed_mask, int invalid)
       violation(c, K_STATUS, "status %d (%s)", st, wa_status_message(st));
    if (invalid && st != WA_INVALID_ARGUMENT)
       violation(c, K_INVALID_ACCEPTED, "status %d", st);
-   if (!invalid && st == WA_INVALID_ARGUMENT)
+   /* (with a message: checked with the whole message after the call, check_full_message) */
+   if (!invalid && st == WA_INVALID_ARGUMENT && !has_msg[c->family])
       violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT");
    if (!invalid && (st == WA_NO_SOLUTION || st == WA_NOT_CONVERGED || st == WA_NUMERICAL_ERROR))
    {
@@ -905,6 +1050,15 @@ static int run_critical(const call_t *c, int msg) {
    return do_critical(c, c->mu, msg, P(0, DS(0)), P(1, DS(1)));
 }
 
+/* Loads compare "up to rounding": 1e-12 relative, and 1e-15 absolute (P* is normalised by
+   p*, so the loads of a cycle are O(1): P_fc* ~ 1; near P* = 0 only rounding is left). */
+static int load_le(double p1, double p2) {
+   return p1 <= p2 + 1e-12 * fabs(p2) + 1e-15;
+}
+/* P_min <= P up to rounding (P_min is the least P* over the retraction's events and chain
+   points, computed from the same states). */
+static int pmin_below(double p_min, double p) { return load_le(p_min, p); }
+
 static int ok_forces(int model, double fc, double pf) {
    return isfinite(fc) && (isfinite(pf) || (model == WA_MODEL_JKR && pf == -INFINITY));
 }
@@ -915,6 +1069,8 @@ static void check_critical(const call_t *c, int st, int invalid) {
    if (st == WA_OK) {
       if (!(c->null_mask & 3u) && !ok_forces(c->model, fc, pf))
          violation(c, K_NONFINITE, "P_fc %.17g P_pf %.17g", fc, pf);
+      else if (!(c->null_mask & 3u) && !load_le(pf, fc))
+         violation(c, K_ORDER, "P_fc %.17g below P_pf %.17g", fc, pf);
    } else if ((!(c->null_mask & 1u) && !isnan(fc)) || (!(c->null_mask & 2u) && !isnan(pf))) {
       violation(c, K_FAIL_OUTPUT, "status %d: P_fc %.17g P_pf %.17g (want NaN)", st, fc, pf);
    }
@@ -951,6 +1107,8 @@ static void check_path(const call_t *c, int st, int invalid) {
          violation(c, K_COUNT, "status %d with n_events %d, capacity %d", st, n, c->capacity);
       if (!ok_forces(c->model, fc, pf))
          violation(c, K_NONFINITE, "status %d: P_fc %.17g P_pf %.17g", st, fc, pf);
+      else if (!load_le(pf, fc))
+         violation(c, K_ORDER, "P_fc %.17g below P_pf %.17g", fc, pf);
       if (n < 0) return;
       m = n < c->capacity ? n : c->capacity;
       if (m > FILL) m = FILL;
@@ -970,6 +1128,15 @@ static void check_path(const call_t *c, int st, int invalid) {
                       sg, e, a, cs);
             break;
          }
+         /* a jump is a start and an end at the same load; full contact reached at P_fc */
+         if ((e == WA_EVENT_JUMP_END && k > 0 && I(1)[k - 1] == WA_EVENT_JUMP_START &&
+              p != D(2)[k - 1]) ||
+             (e == WA_EVENT_FULL_CONTACT_REACHED && sg == WA_STAGE_LOADING && p != fc) ||
+             (e == WA_EVENT_PULL_OFF && p != pf)) {
+            violation(c, K_ORDER, "event %d of %d: event %d P* %.17g (previous %.17g, P_fc "
+                      "%.17g)", k, n, e, p, k > 0 ? D(2)[k - 1] : NAN, fc);
+            break;
+         }
       }
       if (c->capacity >= 0) check_untouched(c, 3, 2, m, c->capacity);
    }
@@ -982,6 +1149,10 @@ static int run_sweep(const call_t *c, int msg) {
    fill_buffers(n);
    memcpy(D(0), c->mus, n * sizeof(double));
    lib_call();
+   if (c->family == F_SWEEP_STATUS)
+      return wa_critical_sweep_status(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)),
+                                      P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)), MSG(c),
+                                      c->msgcap);
    if (msg)
       return wa_critical_sweep_msg(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)),
                                    P(2, D(2)), P(3, I(0)), P(4, I(1)), MSG(c), c->msgcap);
@@ -1030,6 +1201,10 @@ static void check_sweep(const call_t *c, int st, int invalid) {
             violation(c, K_STATE, "row %d: mechanisms %d %d", k, fm, pm);
             break;
          }
+         if (!load_le(pf, fc)) {
+            violation(c, K_ORDER, "row %d: P_fc %.17g below P_pf %.17g", k, fc, pf);
+            break;
+         }
       } else if ((!(nm & 2u) && !isnan(fc)) || (!(nm & 4u) && !isnan(pf)) ||
                  (!(nm & 8u) && fm != -1) || (!(nm & 16u) && pm != -1)) {
          violation(c, K_FAIL_OUTPUT, "status %d, row %d: %.17g %.17g %d %d (want NaN NaN -1 -1)",
@@ -1037,6 +1212,108 @@ static void check_sweep(const call_t *c, int st, int invalid) {
          break;
       }
    }
+}
+
+/* wa_critical_sweep_status: row_status in ibuf[2] (bit 5 of the NULL mask): every row
+   WA_INVALID_ARGUMENT on an invalid argument; else WA_OK exactly where the row was
+   computed, a documented failure code elsewhere, and the return value the status of the
+   first failing row. */
+static void check_row_status(const call_t *c, int st) {
+   int n = c->n_mu > 0 ? c->n_mu : 0, k, first = WA_OK;
+   unsigned nm = c->null_mask;
+   if (nm & 32u) return;
+   for (k = 0; k < n; k++) {
+      int rs = I(2)[k], good = !(nm & 6u) && !isnan(D(1)[k]);
+      if (st == WA_INVALID_ARGUMENT) {
+         if (rs != WA_INVALID_ARGUMENT) {
+            violation(c, K_FAIL_OUTPUT, "WA_INVALID_ARGUMENT: row_status[%d] = %d", k, rs);
+            return;
+         }
+         continue;
+      }
+      if (rs != WA_OK && rs != WA_NO_SOLUTION && rs != WA_NOT_CONVERGED &&
+          rs != WA_NUMERICAL_ERROR) {
+         violation(c, K_STATUS, "row_status[%d] = %d", k, rs);
+         return;
+      }
+      if (!(nm & 6u) && (rs == WA_OK) != good) {
+         violation(c, K_INCONSISTENT, "row_status[%d] = %d but P_fc %.17g", k, rs, D(1)[k]);
+         return;
+      }
+      if (first == WA_OK) first = rs;
+   }
+   if (st != WA_INVALID_ARGUMENT && st != first)
+      violation(c, K_INCONSISTENT, "status %d, first failing row's status %d", st, first);
+}
+
+/* wa_adhesion_map[_control]: alpha in map_alpha (read only), boundary codes in ibuf[0],
+   alpha_out and mu_out in dbuf[0..1], *n_out in iscalar[0]. */
+static double map_alpha[4];
+
+static int run_map(const call_t *c) {
+   int n = c->n_alpha > 0 ? (c->n_alpha < 4 ? c->n_alpha : 4) : 0;
+   fill_buffers(c->capacity);
+   memcpy(map_alpha, c->alphas, n * sizeof(double));
+   lib_call();
+   if (c->family == F_MAP)
+      return wa_adhesion_map(c->model, c->n_alpha, P(0, map_alpha), c->mu_lo, c->mu_hi, c->capacity,
+                             P(1, I(0)), P(2, D(0)), P(3, D(1)), P(4, IS(0)));
+   return wa_adhesion_map_control(c->model, c->control, c->n_alpha, P(0, map_alpha), c->mu_lo,
+                                  c->mu_hi, c->capacity, P(1, I(0)), P(2, D(0)), P(3, D(1)),
+                                  P(4, IS(0)));
+}
+
+static int map_control_of(const call_t *c) {
+   return c->family == F_MAP ? WA_MAP_CONTROL_LOAD : c->control;
+}
+
+/* A boundary code of the documented form for the control: 100 which + 10 below + above. */
+static int ok_map_code(int code, int control) {
+   int which = code / 100, lo = code / 10 % 10, hi = code % 10;
+   int max_mech = which == 2 ? WA_MECHANISM_JUMP_CASE2 : 3;
+   if (code < 100 || code > 499 || lo == hi || lo > max_mech || hi > max_mech) return 0;
+   if (control == WA_MAP_CONTROL_LOAD) return which == 1 || which == 2;
+   if (control == WA_MAP_CONTROL_GAP) return which == 3 || which == 4;
+   return 1;
+}
+
+static void check_map(const call_t *c, int st, int invalid) {
+   int n = *IS(0), k, m, na = c->n_alpha > 0 ? (c->n_alpha < 4 ? c->n_alpha : 4) : 0;
+   int control = map_control_of(c);
+   unsigned nm = c->null_mask;
+   check_status(c, st, 0x3B, invalid); /* 0, 1, 3, 4, 5 */
+   if (!(nm & 1u) && memcmp(map_alpha, c->alphas, na * sizeof(double)) != 0)
+      violation(c, K_OVERRUN, "the input alpha was modified");
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) {
+      if (!(nm & 16u) && n != 0) violation(c, K_FAIL_OUTPUT, "status %d with n_out %d", st, n);
+      if (c->capacity > 0) {
+         for (k = 0; k < c->capacity && k < FILL; k++)
+            if (I(0)[k] != I_SENT || !is_dsent(D(0)[k]) || !is_dsent(D(1)[k])) {
+               violation(c, K_FAIL_OUTPUT, "status %d: point %d written", st, k);
+               break;
+            }
+      }
+      return;
+   }
+   if (nm & 16u) return;
+   if (n < 0 || (st == WA_OK && n > c->capacity) || (st == WA_CAPACITY_TOO_SMALL && n <= c->capacity))
+      violation(c, K_COUNT, "status %d with n_out %d, capacity %d", st, n, c->capacity);
+   m = n < c->capacity ? n : c->capacity;
+   if (m > FILL) m = FILL;
+   for (k = 0; k < m; k++) {
+      double a = D(0)[k], mu = D(1)[k];
+      if (!isfinite(a) || !isfinite(mu)) {
+         violation(c, K_NONFINITE, "point %d of %d: alpha %.17g mu %.17g", k, n, a, mu);
+         break;
+      }
+      if (!ok_map_code(I(0)[k], control) || !(a >= c->alphas[0] && a <= c->alphas[na - 1]) ||
+          !(mu >= c->mu_lo && mu <= c->mu_hi)) {
+         violation(c, K_STATE, "point %d of %d: code %d alpha %.17g mu %.17g", k, n, I(0)[k], a,
+                   mu);
+         break;
+      }
+   }
+   if (c->capacity >= 0) check_untouched(c, 2, 1, m, c->capacity);
 }
 
 /* wa_profile[_msg]: x* in dbuf[0] (read only), traction and gap in dbuf[1..2]. The c* of
@@ -1117,6 +1394,13 @@ static int run_gap_path(const call_t *c, int msg) {
                       P(8, DS(0)), P(9, DS(1)), P(10, DS(2)));
 }
 
+/* Tolerance of "a jump keeps gbar*" (relative). The landing state is solved for the start's
+   gbar* to 1e-15 in its chain parameter (a*), and its gbar* recomputed from it, so the two
+   agree to rounding times the conditioning of gbar*(a*): a few ulps mostly, 9.4e-8 at most
+   in 2e6 calls (21167 jumps; JKR at alpha 7.7e11, landing near a* = 1/2 where gbar*(a*) is
+   steep). The summary prints the largest difference seen. */
+#define GBAR_JUMP_TOL 1e-6
+
 static int ok_gap_event(int e) {
    return (e >= WA_GAP_EVENT_JUMP_START && e <= WA_GAP_EVENT_FULL_CONTACT_LEFT) ||
           (e >= WA_GAP_EVENT_TOUCH && e <= WA_GAP_EVENT_INTERACTION_LOST);
@@ -1142,6 +1426,8 @@ static void check_gap_path(const call_t *c, int st, int invalid) {
    if (!(isfinite(w) && w >= 0 && isfinite(wf) && wf >= 0 && isfinite(gt) && gt >= 1.0 - 1e-12))
       violation(c, K_NONFINITE, "status %d: W* %.17g fraction %.17g g_touch %.17g", st, w, wf,
                 gt);
+   else if (c->model != WA_MODEL_MD && gt != 1.0)
+      violation(c, K_STATE, "g_touch %.17g (1 except for MD)", gt);
    if (n < 0) return;
    m = n < c->capacity ? n : c->capacity;
    if (m > FILL) m = FILL;
@@ -1157,12 +1443,27 @@ static void check_gap_path(const call_t *c, int st, int invalid) {
           !ok_state(a, cs, z) || (k > 0 && sg < I(0)[k - 1]) ||
           (k == 0 && (e != WA_GAP_EVENT_TOUCH || g != gt)) ||
           (k == n - 1 && e != WA_GAP_EVENT_INTERACTION_LOST) ||
-          /* a jump keeps gbar*: 1e-10 in the unit tests; 1e-6 here, where JKR at alpha ~
-             1e11 lands near a* = 1/2, where gbar*(a*) is too steep for 1e-10 */
-          (k > 0 && e == WA_GAP_EVENT_JUMP_END && I(1)[k - 1] == WA_GAP_EVENT_JUMP_START &&
-           !(fabs(g - D(3)[k - 1]) <= 1e-6 * (1 + g)))) {
+          /* the P* = 0 states far apart: a* = c* = P* = 0, zone WA_ZONE_NO_CONTACT */
+          ((e == WA_GAP_EVENT_TOUCH || e == WA_GAP_EVENT_INTERACTION_LOST) &&
+           (a != 0 || cs != 0 || p != 0 || z != WA_ZONE_NO_CONTACT))) {
          violation(c, K_STATE, "event %d of %d: stage %d event %d zone %d a* %.17g c* %.17g "
-                   "gbar %.17g", k, n, sg, e, z, a, cs, g);
+                   "P* %.17g gbar %.17g", k, n, sg, e, z, a, cs, p, g);
+         break;
+      }
+      if (k > 0 && e == WA_GAP_EVENT_JUMP_END && I(1)[k - 1] == WA_GAP_EVENT_JUMP_START) {
+         double rel = fabs(g - D(3)[k - 1]) / (g > 0 ? g : 1);
+         shm->n_jumps++;
+         if (rel > shm->max_jump_rel) {
+            shm->max_jump_rel = rel;
+            shm->max_jump_call = c->index;
+         }
+      }
+      /* a jump keeps gbar* (the header: "a jump's start and end share gbar*") */
+      if (k > 0 && e == WA_GAP_EVENT_JUMP_END && I(1)[k - 1] == WA_GAP_EVENT_JUMP_START &&
+          !(fabs(g - D(3)[k - 1]) <= GBAR_JUMP_TOL * g)) {
+         violation(c, K_JUMP_GBAR, "event %d of %d: jump from gbar %.17g (P* %.17g) to %.17g "
+                   "(P* %.17g, a* %.17g), relative difference %.3g", k, n, D(3)[k - 1],
+                   D(2)[k - 1], g, p, a, fabs(g - D(3)[k - 1]) / g);
          break;
       }
    }
@@ -1256,19 +1557,137 @@ static void check_gap_critical(const call_t *c, int st, int invalid) {
          return;
       }
    }
-   if (st == WA_OK &&
-       !(v[WA_GAP_CRITICAL_G_TOUCH] >= 1.0 - 1e-12 && v[WA_GAP_CRITICAL_G_CONTACT] >= 0 &&
-         v[WA_GAP_CRITICAL_G_CONTACT] <= v[WA_GAP_CRITICAL_G_TOUCH] * (1 + 1e-12) &&
+   if (st != WA_OK) return;
+   if (!(v[WA_GAP_CRITICAL_G_TOUCH] >= 1.0 - 1e-12 && v[WA_GAP_CRITICAL_G_CONTACT] >= 0 &&
          v[WA_GAP_CRITICAL_P_JUMP_IN] <= 0 && v[WA_GAP_CRITICAL_A_JUMP_IN] >= 0 &&
          v[WA_GAP_CRITICAL_A_JUMP_IN] <= 0.5 && v[WA_GAP_CRITICAL_G_P_MIN] >= 0 &&
          v[WA_GAP_CRITICAL_A_P_MIN] >= 0 && v[WA_GAP_CRITICAL_A_P_MIN] <= 0.5 &&
-         v[WA_GAP_CRITICAL_P_MIN] <= v[WA_GAP_CRITICAL_P_CONTACT_LOST] &&
-         v[WA_GAP_CRITICAL_P_MIN] <= 0 &&
-         v[WA_GAP_CRITICAL_G_CONTACT_LOST] <= v[WA_GAP_CRITICAL_G_INTERACTION_LOST] &&
-         v[WA_GAP_CRITICAL_G_TOUCH] <= v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * (1 + 1e-12)))
-      violation(c, K_STATE, "values g_touch %.17g P_jump_in %.17g g_contact %.17g P_min %.17g "
-                "g_contact_lost %.17g P_contact_lost %.17g g_interaction_lost %.17g",
-                v[0], v[1], v[3], v[4], v[7], v[8], v[9]);
+         v[WA_GAP_CRITICAL_P_MIN] <= 0 && v[WA_GAP_CRITICAL_G_CONTACT_LOST] >= 0 &&
+         (c->model == WA_MODEL_MD || (v[WA_GAP_CRITICAL_G_TOUCH] == 1.0 &&
+                                      v[WA_GAP_CRITICAL_G_CONTACT] == 1.0))))
+      violation(c, K_STATE, "values g_touch %.17g P_jump_in %.17g a_jump_in %.17g g_contact "
+                "%.17g P_min %.17g g_P_min %.17g a_P_min %.17g g_contact_lost %.17g", v[0],
+                v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+   /* the documented orderings, up to rounding (1e-12 relative) */
+   else if (!(v[WA_GAP_CRITICAL_G_CONTACT] <= v[WA_GAP_CRITICAL_G_TOUCH] * (1 + 1e-12) &&
+              v[WA_GAP_CRITICAL_P_MIN] <= v[WA_GAP_CRITICAL_P_CONTACT_LOST] &&
+              v[WA_GAP_CRITICAL_G_CONTACT_LOST] <=
+                 v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * (1 + 1e-12) &&
+              v[WA_GAP_CRITICAL_G_TOUCH] <= v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * (1 + 1e-12)))
+      violation(c, K_ORDER, "g_contact %.17g <= g_touch %.17g, P_min %.17g <= P_contact_lost "
+                "%.17g, g_contact_lost %.17g and g_touch <= g_interaction_lost %.17g", v[3],
+                v[0], v[4], v[8], v[7], v[9]);
+}
+
+/* ------------------------------------------------------ the whole message */
+
+static int run_family(const call_t *c, int msg);
+
+/* The arguments of each family, for the name an WA_INVALID_ARGUMENT message gives. */
+enum {
+   A_MODEL = 1, A_ALPHA = 2, A_MU = 4, A_MUS = 8, A_A = 16, A_CS = 32, A_CAP = 64, A_N = 128,
+   A_NMU = 256, A_GBAR = 512, A_X = 1024
+};
+static unsigned family_args(int f) {
+   const unsigned base = A_MODEL | A_ALPHA | A_MU;
+   switch (f) {
+   case F_EQUILIBRIUM: case F_EQUILIBRIUM_GAP: return base | A_A;
+   case F_ROOTS: case F_ROOTS_GAP: return base | A_A | A_CAP;
+   case F_TRACE_BRANCH: case F_TRACE_BRANCH_GAP: case F_LOAD_PATH: case F_GAP_PATH:
+      return base | A_CAP;
+   case F_CRITICAL_FORCES: case F_GAP_CRITICAL: return base;
+   case F_CRITICAL_SWEEP: case F_SWEEP_STATUS: return A_MODEL | A_ALPHA | A_MUS | A_NMU;
+   case F_PROFILE: return base | A_A | A_CS | A_N | A_X;
+   case F_GAP_LAW: return base | A_N | A_GBAR;
+   }
+   return 0;
+}
+
+/* Does the WA_INVALID_ARGUMENT message m name an argument of the function that the caller
+   passed out of its documented range ("alpha = ... is outside", "gbar[2] = ...", "x_star[1]:
+   not a finite number", "P_fc and P_pf must not be NULL")? */
+static int names_bad_argument(const call_t *c, const char *m) {
+   char name[32];
+   int len = 0, idx = -1;
+   unsigned args = family_args(c->family);
+   if (strstr(m, "must not be NULL")) return c->null_mask != 0;
+   while (len < 31 && (m[len] == '_' || (m[len] >= 'a' && m[len] <= 'z') ||
+                       (m[len] >= 'A' && m[len] <= 'Z') || (len > 0 && m[len] >= '0' && m[len] <= '9'))) {
+      name[len] = m[len];
+      len++;
+   }
+   name[len] = 0;
+   if (m[len] == '[') idx = atoi(m + len + 1);
+   if (!strcmp(name, "model")) return (args & A_MODEL) && !valid_model(c->model);
+   if (!strcmp(name, "alpha")) return (args & A_ALPHA) && !valid_alpha(c->alpha);
+   if (!strcmp(name, "mu")) {
+      const char *at = strstr(m, "(mu[");     /* the sweeps: "mu = ... (mu[2])" */
+      if (at) idx = atoi(at + 4);
+      if (args & A_MUS) return idx >= 0 && idx < c->n_mu && idx < 8 && !valid_mu(c->mus[idx]);
+      return (args & A_MU) && idx < 0 && !valid_mu(c->mu);
+   }
+   if (!strcmp(name, "a_star")) return (args & A_A) && !valid_a(c->a);
+   if (!strcmp(name, "c_star")) return (args & A_CS) && !(prof_cs >= 0 && prof_cs <= 0.5);
+   if (!strcmp(name, "capacity")) return (args & A_CAP) && c->capacity < 0;
+   if (!strcmp(name, "n")) return (args & A_N) && c->capacity < 0;
+   if (!strcmp(name, "n_mu")) return (args & A_NMU) && c->n_mu < 0;
+   if (!strcmp(name, "gbar"))
+      return (args & A_GBAR) && idx >= 0 && idx < c->capacity && idx < FILL &&
+             !(isfinite(law_g[idx]) && law_g[idx] >= 0);
+   if (!strcmp(name, "x_star"))
+      return (args & A_X) && idx >= 0 && idx < c->capacity && idx < FILL && !isfinite(prof_x[idx]);
+   return 0;
+}
+
+/* The whole message of the call (status st), through the _msg variant with a large buffer
+   (full_msg; "" for the functions without a message). The message of the call itself (in
+   msg1, when it had a buffer) must be its beginning. */
+static void fetch_message(const call_t *c, int st, const char *msg1) {
+   call_t c2 = *c;
+   int st2, cap = (int)sizeof full_msg;
+   full_msg[0] = 0;
+   if (!has_msg[c->family]) return;
+   c2.msg = 1;
+   c2.msg_null = 0;
+   c2.msgcap = cap;
+   st2 = run_family(&c2, 1);
+   memcpy(full_msg, mbuf + GUARD, cap);
+   full_msg[cap - 1] = 0;
+   if (st2 != st) {
+      violation(c, K_NONDET, "status %d, then %d with a %d-byte message buffer", st, st2, cap);
+      return;
+   }
+   if (c->msg && !c->msg_null && c->msgcap > 1 && msg1 != NULL &&
+       strncmp(msg1, full_msg, (size_t)(c->msgcap < cap ? c->msgcap : cap) - 1) != 0)
+      violation(c, K_NONDET, "message '%s' is not the beginning of '%s'", msg1, full_msg);
+}
+
+/* After a failure: a message that names something, the right argument for
+   WA_INVALID_ARGUMENT, and WA_INVALID_ARGUMENT only for what the header calls invalid. */
+static void check_full_message(const call_t *c, int st, int invalid) {
+   int k, letters = 0;
+   if (!has_msg[c->family] || st == WA_OK) return;
+   for (k = 0; full_msg[k]; k++) letters += (full_msg[k] >= 'a' && full_msg[k] <= 'z');
+   if (letters < 4) {
+      violation(c, K_MISSING_MESSAGE, "status %d with message '%s'", st, full_msg);
+      return;
+   }
+   if (st != WA_INVALID_ARGUMENT) return;
+   if (!invalid)
+      violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT: '%s'", full_msg);
+   else if (!names_bad_argument(c, full_msg))
+      violation(c, K_WRONG_ARGUMENT, "'%s'", full_msg);
+}
+
+/* The allow-list's predicates: is this violation one of a known open defect's class? */
+static int known_class(const call_t *c, int kind) {
+   if ((kind == K_VALID_REJECTED || kind == K_WRONG_ARGUMENT) && c->model == WA_MODEL_MD &&
+       !(family_args(c->family) & A_CS) &&
+       !strncmp(full_msg, "c_star = 5.00000E-01 is outside", 31))
+      return KD_MD_CSTAR_INVALID;
+   if (kind == K_PMIN && c->family == F_GAP_CRITICAL && c->alpha < 2e-3)
+      return KD_GAP_PMIN_SMALL_ALPHA;
+   return -1;
 }
 
 /* ------------------------------------------------------------ one call */
@@ -1313,9 +1732,21 @@ static int is_invalid(const call_t *c) {
              (cap > 0 && ((nm & 31u) || c->x_bad));
    case F_GAP_CRITICAL:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) || (nm & 1u);
+   case F_MAP:
+   case F_MAP_CONTROL: {
+      int k, bad = !(c->model == WA_MODEL_DW || c->model == WA_MODEL_MD) || c->n_alpha < 1 ||
+                   (nm & 17u) || cap < 0 || (cap > 0 && (nm & 14u)) ||
+                   !(c->mu_lo >= WA_MU_MIN && c->mu_hi <= WA_MU_MAX && c->mu_lo < c->mu_hi);
+      if (c->family == F_MAP_CONTROL)
+         bad = bad || c->control < WA_MAP_CONTROL_LOAD || c->control > WA_MAP_CONTROL_BOTH;
+      for (k = 0; k < c->n_alpha && k < 4; k++)
+         bad = bad || !valid_alpha(c->alphas[k]) || (k > 0 && !(c->alphas[k] > c->alphas[k - 1]));
+      return bad;
+   }
+   case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
-                   (c->n_mu > 0 && (nm & 31u));
+                   (c->n_mu > 0 && (nm & (c->family == F_SWEEP_STATUS ? 63u : 31u)));
       for (k = 0; k < c->n_mu && !(nm & 1u); k++) bad = bad || !valid_mu(c->mus[k]);
       return bad;
    }
@@ -1327,7 +1758,7 @@ static int is_invalid(const call_t *c) {
 static int all_finite_valid_sign(const call_t *c) {
    int k;
    if (!(c->alpha > 0 && isfinite(c->alpha))) return 0;
-   if (c->family == F_CRITICAL_SWEEP) {
+   if (c->family == F_CRITICAL_SWEEP || c->family == F_SWEEP_STATUS) {
       for (k = 0; k < c->n_mu; k++)
          if (!valid_mu(c->mus[k])) return 0;
       return 1;
@@ -1343,6 +1774,9 @@ static int run_family(const call_t *c, int msg) {
    case F_CRITICAL_FORCES: return run_critical(c, msg);
    case F_LOAD_PATH: return run_path(c, msg);
    case F_CRITICAL_SWEEP: return run_sweep(c, msg);
+   case F_SWEEP_STATUS: return run_sweep(c, msg);
+   case F_MAP:
+   case F_MAP_CONTROL: return run_map(c);
    case F_EQUILIBRIUM_GAP: return run_equilibrium(c, msg);
    case F_ROOTS_GAP: return run_roots(c, msg);
    case F_TRACE_BRANCH_GAP: return run_branch(c, msg);
@@ -1362,6 +1796,12 @@ static void check_family(const call_t *c, int st, int invalid) {
    case F_CRITICAL_FORCES: check_critical(c, st, invalid); break;
    case F_LOAD_PATH: check_path(c, st, invalid); break;
    case F_CRITICAL_SWEEP: check_sweep(c, st, invalid); break;
+   case F_SWEEP_STATUS:
+      check_sweep(c, st, invalid);
+      check_row_status(c, st);
+      break;
+   case F_MAP:
+   case F_MAP_CONTROL: check_map(c, st, invalid); break;
    case F_EQUILIBRIUM_GAP: check_equilibrium(c, st, invalid); break;
    case F_ROOTS_GAP: check_roots(c, st, invalid); break;
    case F_TRACE_BRANCH_GAP: check_branch(c, st, invalid); break;
@@ -1374,7 +1814,12 @@ static void check_family(const call_t *c, int st, int invalid) {
 
 static int used_elements(const call_t *c, int st) {
    int n, f = c->family;
-   if (f == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
+   if (f == F_CRITICAL_SWEEP || f == F_SWEEP_STATUS) return c->n_mu > 0 ? c->n_mu : 0;
+   if (f == F_MAP || f == F_MAP_CONTROL) {
+      if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 16u)) return 0;
+      n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
+      return n < 0 ? 0 : n;
+   }
    if (f == F_PROFILE || f == F_GAP_LAW) return c->capacity > 0 ? c->capacity : 0;
    if (f == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
    if (f == F_GAP_PATH) {
@@ -1397,7 +1842,9 @@ static int used_elements(const call_t *c, int st) {
 /* How many elements of each array were filled before the call (> FILL: FILL and no
    tail guard). */
 static int filled_elements(const call_t *c) {
-   if (c->family == F_CRITICAL_SWEEP) return c->n_mu > 0 ? c->n_mu : 0;
+   if (c->family == F_CRITICAL_SWEEP || c->family == F_SWEEP_STATUS)
+      return c->n_mu > 0 ? c->n_mu : 0;
+   if (c->family == F_MAP || c->family == F_MAP_CONTROL) return c->capacity > 0 ? c->capacity : 0;
    if (c->family == F_ROOTS || c->family == F_TRACE_BRANCH || c->family == F_LOAD_PATH ||
        c->family == F_ROOTS_GAP || c->family == F_TRACE_BRANCH_GAP || c->family == F_PROFILE ||
        c->family == F_GAP_PATH || c->family == F_GAP_LAW)
@@ -1478,13 +1925,18 @@ static void run_version(const call_t *c) {
    if (wa_version() != v) violation(c, K_NONDET, "another pointer");
 }
 
+/* Gap law samples in the wa_gap_critical cross check. */
+#define LAW_SAMPLES 8
+
+
 /* Cross checks after a successful call (extra library calls, same watchdog). */
 static void cross_check(const call_t *c, int st, rng_t *r) {
    if (c->family == F_GAP_CRITICAL && st == WA_OK && !(c->null_mask & 1u) && unif(r) < 0.5) {
-      /* against the path's events, load control's P_pf and the gap law at gbar*(P_min) */
-      double v[WA_GAP_CRITICAL_COUNT], a[64], cs[64], p[64], g[64], w, wf, gt, fc, pf, gb[2],
-         pa[2], pr[2], da[2], dr[2];
-      int sg[64], ev[64], z[64], n = 0, st2, st3, st4;
+      /* against the path's events, load control's P_pf and the gap law: P_min is the most
+         tensile load of the retraction, so at most every P* of it (up to rounding) */
+      double v[WA_GAP_CRITICAL_COUNT], a[64], cs[64], p[64], g[64], w, wf, gt, fc, pf,
+         gb[LAW_SAMPLES], pa[LAW_SAMPLES], pr[LAW_SAMPLES], da[LAW_SAMPLES], dr[LAW_SAMPLES];
+      int sg[64], ev[64], z[64], n = 0, st2, st3, st4, k;
       memcpy(v, D(0), sizeof v);
       lib_call();
       st2 = wa_gap_path(c->model, c->alpha, c->mu, 64, sg, ev, z, a, cs, p, g, &n, &w, &wf, &gt);
@@ -1493,22 +1945,68 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
          violation(c, K_INCONSISTENT, "wa_gap_path: status %d g_touch %.17g (critical %.17g), "
                    "last gbar %.17g (critical %.17g)", st2, gt, v[0], n > 0 ? g[n - 1] : NAN,
                    v[9]);
+      if (st2 == WA_OK)
+         for (k = 0; k < n; k++)
+            if (sg[k] == WA_STAGE_RETRACTION && !pmin_below(v[WA_GAP_CRITICAL_P_MIN], p[k])) {
+               violation(c, K_PMIN, "P_min %.17g above the retraction's event %d (code %d) P* "
+                         "%.17g at gbar %.17g", v[4], k, ev[k], p[k], g[k]);
+               break;
+            }
       lib_call();
       st3 = wa_critical_forces(c->model, c->alpha, c->mu, &fc, &pf);
       if (st3 == WA_OK && (isinf(pf) ? v[WA_GAP_CRITICAL_P_MIN] != pf
-                                     : !(v[WA_GAP_CRITICAL_P_MIN] <= pf + 1e-9 * (1 + fabs(pf)))))
-         violation(c, K_INCONSISTENT, "P_min %.17g above P_pf %.17g", v[4], pf);
+                                     : !pmin_below(v[WA_GAP_CRITICAL_P_MIN], pf)))
+         violation(c, K_PMIN, "P_min %.17g above P_pf %.17g", v[4], pf);
       if (c->model != WA_MODEL_JKR) {
+         /* gbar*(P_min), beyond the interaction, and a spread over [0, g_interaction_lost] */
          gb[0] = v[WA_GAP_CRITICAL_G_P_MIN];
          gb[1] = v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * 1.5 + 1.0;
+         for (k = 2; k < LAW_SAMPLES; k++) gb[k] = v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * unif(r);
          lib_call();
-         st4 = wa_gap_law(c->model, c->alpha, c->mu, 2, gb, pa, pr, da, dr);
+         st4 = wa_gap_law(c->model, c->alpha, c->mu, LAW_SAMPLES, gb, pa, pr, da, dr);
          if (st4 != WA_OK || pa[1] != 0 || pr[1] != 0 || da[1] != 0 || dr[1] != 0 ||
              !(fabs(pr[0] - v[WA_GAP_CRITICAL_P_MIN]) <= 1e-7 * (1 + fabs(pr[0]))))
             violation(c, K_INCONSISTENT, "wa_gap_law: status %d P_retract(gbar*(P_min) = %.17g) "
                       "= %.17g, P_min %.17g; beyond the interaction %.17g %.17g", st4, gb[0],
                       pr[0], v[4], pa[1], pr[1]);
+         else
+            for (k = 0; k < LAW_SAMPLES; k++)
+               if (!pmin_below(v[WA_GAP_CRITICAL_P_MIN], pr[k])) {
+                  violation(c, K_PMIN, "P_min %.17g above wa_gap_law's P_retract %.17g at gbar "
+                            "%.17g", v[4], pr[k], gb[k]);
+                  break;
+               }
       }
+   }
+   if (c->family == F_SWEEP_STATUS && st == WA_OK && c->n_mu > 0 && !(c->null_mask & 31u) &&
+       unif(r) < 0.3) {
+      /* as wa_critical_sweep_msg: the same rows, bit for bit */
+      int n = c->n_mu, st2, fm[8], pm[8];
+      double fc[8], pf[8];
+      lib_call();
+      st2 = wa_critical_sweep(c->model, c->alpha, n, c->mus, fc, pf, fm, pm);
+      if (st2 != st || memcmp(fc, D(1), n * sizeof(double)) || memcmp(pf, D(2), n * sizeof(double)) ||
+          memcmp(fm, I(0), n * sizeof(int)) || memcmp(pm, I(1), n * sizeof(int)))
+         violation(c, K_INCONSISTENT, "wa_critical_sweep: status %d, rows differ", st2);
+   }
+   if ((c->family == F_MAP || (c->family == F_MAP_CONTROL && c->control == WA_MAP_CONTROL_LOAD)) &&
+       (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) && !(c->null_mask & 31u) &&
+       c->capacity <= FILL && unif(r) < 0.3) {
+      /* wa_adhesion_map_control(WA_MAP_CONTROL_LOAD) is wa_adhesion_map bit for bit */
+      static int code2[FILL];
+      static double a2[FILL], m2[FILL];
+      int n2 = -1, n = *IS(0), m = n < c->capacity ? n : c->capacity, st2;
+      lib_call();
+      if (c->family == F_MAP)
+         st2 = wa_adhesion_map_control(c->model, WA_MAP_CONTROL_LOAD, c->n_alpha, c->alphas,
+                                       c->mu_lo, c->mu_hi, c->capacity, code2, a2, m2, &n2);
+      else
+         st2 = wa_adhesion_map(c->model, c->n_alpha, c->alphas, c->mu_lo, c->mu_hi, c->capacity,
+                               code2, a2, m2, &n2);
+      if (st2 != st || n2 != n || memcmp(code2, I(0), m * sizeof(int)) ||
+          memcmp(a2, D(0), m * sizeof(double)) || memcmp(m2, D(1), m * sizeof(double)))
+         violation(c, K_INCONSISTENT, "wa_adhesion_map and its control %d differ: status %d/%d, "
+                   "%d/%d points", WA_MAP_CONTROL_LOAD, st, st2, n, n2);
    }
    if ((c->family == F_ROOTS || c->family == F_ROOTS_GAP) && st == WA_OK &&
        !(c->null_mask & (c->family == F_ROOTS ? 15u : 31u)) && c->capacity > 0 &&
@@ -1573,6 +2071,12 @@ static void run_one(long index) {
    char msg1[MSG_REAL];
 
    gen_call(index, &c);
+   /* the time limit: the maps 10 times it, a sweep once per row (each row is a load path) */
+   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL ? 10
+                 : (c.family == F_CRITICAL_SWEEP || c.family == F_SWEEP_STATUS) && c.n_mu > 1
+                    ? c.n_mu
+                    : 1) * opt_timeout;
+   full_msg[0] = 0;
    fn = 2 * c.family + c.msg;
    if (opt_list) {
       printf("%ld %s\n", index, c.repro);
@@ -1598,6 +2102,13 @@ static void run_one(long index) {
       check_guards(&c, N_DBUF, 3, filled_elements(&c));
       check_message(&c, st, !invalid && all_finite_valid_sign(&c));
       check_family(&c, st, invalid);
+      if (opt_only >= 0 && (c.family == F_GAP_LAW || c.family == F_PROFILE)) {
+         int k, n = c.capacity > 0 ? c.capacity : 0;
+         printf("   %s:", c.family == F_GAP_LAW ? "gbar" : "x_star");
+         for (k = 0; k < n && k < FILL; k++)
+            printf(" %.17g", c.family == F_GAP_LAW ? law_g[k] : prof_x[k]);
+         printf("\n");
+      }
       if (opt_only >= 0 && c.msg && !c.msg_null && c.msgcap > 0)
          printf("   message: '%s'\n", (char *)mbuf + GUARD);
       /* the same call again (with the other variant: messages do not change results) */
@@ -1606,8 +2117,9 @@ static void run_one(long index) {
       memcpy(msg1, mbuf, sizeof mbuf);
       if (unif(&r) < 0.25) {
          int other = c.msg;
+         shm->started = now(); /* each library call of the repeat has its own time limit */
          call_t c2 = c;
-         if (unif(&r) < 0.5) other = !c.msg;
+         if (unif(&r) < 0.5 && has_msg[c.family] == 1) other = !c.msg;
          c2.msg = other;
          st2 = run_family(&c2, other);
          h2 = digest(st2, used_elements(&c2, st2));
@@ -1621,6 +2133,13 @@ static void run_one(long index) {
       } else {
          cross_check(&c, st, &r);
       }
+      /* a failure: its whole message (plain variants too) must name what failed */
+      if (st != WA_OK && has_msg[c.family]) {
+         shm->started = now(); /* a fresh time limit for the fetch */
+         fetch_message(&c, st, (char *)msg1 + GUARD);
+         check_full_message(&c, st, invalid);
+         if (opt_only >= 0) printf("   whole message: '%s'\n", full_msg);
+      }
       return;
    }
    dt = now() - t0;
@@ -1633,6 +2152,7 @@ static void run_one(long index) {
 static void run_range(long from, long to) {
    long i;
    for (i = from; i < to; i++) {
+      shm->limit = opt_timeout;
       shm->started = now();
       shm->current = i;
       run_one(i);
@@ -1665,7 +2185,7 @@ static long parse_long(const char *s, const char *name) {
 
 static void usage(void) {
    fprintf(stderr, "usage: fuzz [--calls N] [--seed S] [--timeout SECONDS] [--max-hangs N]\n"
-                   "            [--max-print N] [--only INDEX] [--list]\n");
+                   "            [--max-print N] [--only INDEX] [--list] [--strict]\n");
    exit(2);
 }
 
@@ -1761,10 +2281,15 @@ int main(int argc, char **argv) {
    if ((env = getenv("WA_FUZZ_CALLS")) && *env) opt_calls = parse_long(env, "WA_FUZZ_CALLS");
    if ((env = getenv("WA_FUZZ_SEED")) && *env) opt_seed = parse_long(env, "WA_FUZZ_SEED");
    if ((env = getenv("WA_FUZZ_TIMEOUT")) && *env) opt_timeout = atof(env);
+   if ((env = getenv("WA_FUZZ_STRICT")) && *env && strcmp(env, "0")) opt_strict = 1;
    for (i = 1; i < argc; i++) {
       const char *a = argv[i];
       if (!strcmp(a, "--list")) {
          opt_list = 1;
+         continue;
+      }
+      if (!strcmp(a, "--strict")) {
+         opt_strict = 1;
          continue;
       }
       if (i + 1 >= argc) usage();
@@ -1831,11 +2356,11 @@ int main(int argc, char **argv) {
             cur1 = shm->current;
             t = shm->started;
             cur2 = shm->current;
-            if (cur1 >= 0 && cur1 == cur2 && now() - t > opt_timeout) {
+            if (cur1 >= 0 && cur1 == cur2 && now() - t > shm->limit) {
                char what[80];
                kill(pid, SIGKILL);
                waitpid(pid, &wst, 0);
-               sprintf(what, "no return within %g s (killed)", opt_timeout);
+               sprintf(what, "no return within %g s (killed)", shm->limit);
                report_process_failure(cur1, K_HANG, what);
                hangs++;
                start = cur1 + 1;
@@ -1880,12 +2405,21 @@ int main(int argc, char **argv) {
    for (fn = 0; fn < N_FN; fn++) {
       long n = shm->calls[fn];
       if (n == 0) continue;
-      printf("  %-24s%-4s %9ld %10.3f %10.1f   ", family_name[fn / 2], fn % 2 ? "_msg" : "",
+      printf("  %-24s%-4s %9ld %10.3f %10.1f   ", family_name[fn / 2], fn_suffix(fn),
              n, 1e3 * shm->seconds[fn] / n, 1e3 * shm->max_seconds[fn]);
       for (k = 0; k < 7; k++) printf(" %ld", shm->status_count[fn][k]);
       printf("\n");
    }
-   printf("  violations by kind:\n");
+   printf("  gap-path jumps checked: %ld, largest relative gbar* change %.3g (call %ld; "
+          "tolerance %g)\n", shm->n_jumps, shm->max_jump_rel, shm->max_jump_call, GBAR_JUMP_TOL);
+   printf("  violations by kind (every kind):\n");
+   for (k = 0; k < N_KIND; k++)
+      printf("  %8ld %-30s %s\n", shm->viol[k], kind_name[k], kind_severe[k] ? "severe" : "mild");
+   printf("  known open defects (allow-list%s):\n",
+          opt_strict ? " ignored: --strict" : "; counted, not failing");
+   for (k = 0; k < N_KNOWN; k++)
+      printf("  %8ld %-30s %s\n", shm->known[k], known_defect[k].name, known_defect[k].what);
+   printf("  violations by kind and function:\n");
    for (k = 0; k < N_KIND; k++) {
       if (shm->viol[k] == 0) continue;
       printf("  %8ld %-28s %s (%s)\n", shm->viol[k], kind_name[k],
@@ -1893,7 +2427,7 @@ int main(int argc, char **argv) {
       for (fn = 0; fn < N_FN; fn++)
          if (shm->viol_fn[k][fn])
             printf("  %8s   %ld in %s%s\n", "", shm->viol_fn[k][fn], family_name[fn / 2],
-                   fn % 2 ? "_msg" : "");
+                   fn_suffix(fn));
       if (kind_severe[k]) severe += 1;
    }
    if (shm->viol[K_FAILED_VALID]) {
