@@ -15,6 +15,7 @@ program tester
    use test_map, only: collect_map
    use test_gappath, only: collect_gappath
    use test_gapcritical, only: collect_gapcritical
+   use test_bem, only: collect_bem
    implicit none
    type(unittest_type), allocatable :: tests(:)
    character(len=64) :: suite, only
@@ -62,6 +63,9 @@ program tester
    end if
    if (wanted("gapcritical")) then
       call collect_gapcritical(tests); call run_suite("gapcritical", tests, npass, nfail, only)
+   end if
+   if (wanted("bem")) then
+      call collect_bem(tests); call run_suite("bem", tests, npass, nfail, only)
    end if
    if (allocated(tests)) deallocate (tests)   ! LeakSanitizer counts what main still holds
    print '(i0,a,i0,a)', npass, " passed, ", nfail, " failed"
