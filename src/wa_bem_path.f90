@@ -16,6 +16,8 @@ module wa_bem_path
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, set_error
    use wa_params, only: params_type
+   use wa_bem_law, only: bem_law_type, lj_law, law_eval
+   use wa_bem_elastic, only: full_period
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
       point_info, lj_problem, metric_dot
    use wa_bem_trace, only: lj_branch_type, lj_trace, lj_trace_options, lj_point_at, &
@@ -24,7 +26,7 @@ module wa_bem_path
    implicit none
    private
 
-   public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle
+   public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, lj_profile
    public :: lj_stage_loading, lj_stage_unloading, lj_stage_approach, lj_stage_retraction
    public :: lj_path_jump_start, lj_path_jump_end, lj_path_full_contact_reached, &
       lj_path_full_contact_left, lj_path_pull_off
@@ -65,6 +67,36 @@ module wa_bem_path
    end type lj_cycle_type
 
 contains
+
+   !> Pull-off of the rigid wave (alpha -> 0 at fixed eps/Delta), the plane-strain
+   !> analogue of Bradley's: the crest as a parabola f = 2 pi^2 x^2 and eps << Delta give
+   !>   P_pf* = -(8 dgamma/(3 sqrt(2 eps))) (9/34) t^(5/2),  t^6 = 15/(136 c9),
+   !> c9 = 15!!/16!! = 6435/32768 (doc/theory.md, "Rigid limit"); dgamma = pi alpha^2/2
+   !> and eps = (4 alpha^4)^(1/3)/mu in units of p* Delta and Delta.
+   pure function lj_rigid_pull_off(params) result(p_pf)
+      type(params_type), intent(in) :: params
+      real(wp) :: p_pf, t
+      type(bem_law_type) :: law
+      real(wp), parameter :: c9 = 6435.0_wp/32768.0_wp
+      law = lj_law(params%alpha, params%mu)
+      t = (15.0_wp/(136.0_wp*c9))**(1.0_wp/6.0_wp)
+      p_pf = -(8.0_wp*law%dgamma/(3.0_wp*sqrt(2.0_wp*law%eps)))*(9.0_wp/34.0_wp)*t**2.5_wp
+   end function lj_rigid_pull_off
+
+   !> Gap h/Delta and traction sigma/p* (tension positive) of state z over the whole
+   !> period, at x = j/N, j = 0..N-1.
+   pure subroutine lj_profile(problem, z, x, gap, traction)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: z(:)
+      real(wp), intent(out) :: x(:), gap(:), traction(:)
+      real(wp), allocatable :: slope(:)
+      integer :: j, np
+      np = problem%grid%n_period
+      allocate (slope(np))
+      x = [(real(j, wp)/np, j = 0, np - 1)]
+      gap = full_period(problem%grid, z(1:problem%grid%n))
+      call law_eval(problem%law, gap, traction, slope)
+   end subroutine lj_profile
 
    !> Trace, both paths and the critical values at the grid of n (0 or absent: automatic)
    !> and at half that grid, whose difference is the error estimate (skipped with

@@ -27,7 +27,9 @@ contains
          new_unittest("prototype_snap_alpha03_mu1", test_snap), &
          new_unittest("grid_convergence_alpha03_mu3", test_convergence), &
          new_unittest("westergaard_limit", test_westergaard), &
-         new_unittest("jkr_trend", test_jkr)]
+         new_unittest("jkr_trend", test_jkr), &
+         new_unittest("rigid_limit", test_rigid), &
+         new_unittest("profile_means", test_profile)]
    end subroutine collect_bem
 
    !> A = H diag(lambda) H (H a Householder reflector): inertia and solve.
@@ -289,5 +291,78 @@ contains
       call check(error, d_fc(2) < d_fc(1) .and. d_fc(3) < d_fc(2) .and. d_fc(3) < 2.0e-3_wp, &
          "snap towards JKR's P_fc")
    end subroutine test_jkr
+
+   !> alpha -> 0 at fixed eps = 0.01 Delta: the pull-off approaches the rigid wave's
+   !> (maximum over the crest gap of the mean LJ tension on the undeformed wave, by the
+   !> trapezoidal rule, spectrally accurate for a periodic integrand), which the closed
+   !> form (the parabolic crest, eps -> 0) meets to O(eps).
+   subroutine test_rigid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      real(wp) :: alphas(2), ratio(2), rigid, mu
+      integer :: k, status
+      alphas = [0.02_wp, 0.01_wp]
+      do k = 1, 2
+         mu = (4*alphas(k)**4)**(1.0_wp/3)/0.01_wp
+         call new_params(alphas(k), mu, params, status)
+         call lj_cycle(params, cyc, status, n=256, estimate=.false.)
+         call check(error, status == wa_ok, "lj_cycle")
+         if (allocated(error)) return
+         rigid = rigid_pull_off(lj_law(alphas(k), mu))
+         call check(error, abs(lj_rigid_pull_off(params)/rigid - 1) < 2.0e-3_wp, &
+            "closed form within O(eps) of the rigid wave")
+         if (allocated(error)) return
+         ratio(k) = cyc%p_pf/rigid
+      end do
+      call check(error, ratio(1) < ratio(2) .and. ratio(2) < 1.0_wp .and. ratio(2) > 0.94_wp, &
+         "towards the rigid pull-off")
+   end subroutine test_rigid
+
+   !> -max over delta of mean sigma(delta + 1 - cos 2 pi x) (golden section).
+   function rigid_pull_off(law) result(p)
+      type(bem_law_type), intent(in) :: law
+      real(wp) :: p, lo, hi, m1, m2
+      integer :: it
+      lo = 0.5_wp*law%eps; hi = 3.0_wp*law%eps
+      do it = 1, 100
+         m1 = lo + (hi - lo)*0.381966_wp; m2 = hi - (hi - lo)*0.381966_wp
+         if (mean_tension(law, m1) > mean_tension(law, m2)) then
+            hi = m2
+         else
+            lo = m1
+         end if
+      end do
+      p = -mean_tension(law, 0.5_wp*(lo + hi))
+   end function rigid_pull_off
+
+   function mean_tension(law, delta) result(t)
+      type(bem_law_type), intent(in) :: law
+      real(wp), intent(in) :: delta
+      real(wp) :: t, s(4000), d(4000)
+      integer :: j
+      call law_eval(law, [(delta + 1 - cos(2*pi*j/4000.0_wp), j = 0, 3999)], s, d)
+      t = sum(s)/4000
+   end function mean_tension
+
+   !> The profile of a traced state: mean traction = -P*, mean gap = gbar*.
+   subroutine test_profile(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      real(wp), allocatable :: x(:), gap(:), traction(:)
+      integer :: status, i
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_problem(params, problem, status, n=128)
+      call lj_trace(problem, br, status)
+      allocate (x(128), gap(128), traction(128))
+      do i = 1, br%n, 17
+         call lj_profile(problem, br%z(:, i), x, gap, traction)
+         call check(error, abs(sum(traction)/128 + br%p_star(i)) < 1.0e-9_wp*(1 + abs(br%p_star(i))) &
+            .and. abs(sum(gap)/128 - br%gbar(i)) < 1.0e-12_wp*br%gbar(i), "means")
+         if (allocated(error)) return
+      end do
+   end subroutine test_profile
 
 end module test_bem
