@@ -280,7 +280,7 @@ contains
       integer, intent(in) :: by, i
       real(wp), intent(in) :: value
       integer, intent(out) :: land, status
-      type(jacobian_type) :: jac0, jac
+      type(jacobian_type) :: pre
       type(brent_type) :: solver
       type(point_info_type) :: info
       real(wp), allocatable :: z(:), t(:)
@@ -295,26 +295,29 @@ contains
       else if (q1 == 0.0_wp) then
          land = i + 1; return
       end if
-      n_factor = 0
-      call factor_at(problem, branch%z(:, i), jac0)
+      n_factor = 1
+      call factor_at(problem, branch%z(:, i), pre)
       ds = branch%s(i + 1) - branch%s(i)
       call brent_init(solver, 0.0_wp, q0, ds, q1, 1.0e-12_wp*ds)
       do it = 1, 80
          call brent_propose(solver, s, done, settle=.true.)
          if (done) exit
-         call lj_point_at(problem, branch%z(:, i), branch%t(:, i), jac0, s, z, t, jac, &
-            n_factor, status)
+         call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, s, z, t, n_factor, &
+            status)
          if (status /= wa_ok) return
          info = point_info(problem, z)
          q = info%p
          if (by == by_gap) q = info%gbar
          call brent_accept(solver, q - value)
       end do
-      call lj_point_at(problem, branch%z(:, i), branch%t(:, i), jac0, solver%b, z, t, jac, &
+      call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, solver%b, z, t, &
          n_factor, status)
       if (status /= wa_ok) return
       info = point_info(problem, z)
-      call branch_append(problem, branch, z, t, info, branch%s(i) + solver%b, jac, 0, 0)
+      call factor_at(problem, z, pre)
+      n_factor = n_factor + 1
+      call branch_append(problem, branch, z, t, info, branch%s(i) + solver%b, pre%neg_load, &
+         pre%neg_gap, 0, 0)
       call move_last(branch, i + 1)
       land = i + 1
       branch%n_factor = branch%n_factor + n_factor

@@ -50,6 +50,8 @@ module wa_bem_solver
    !> A gap below this fraction of the law's zero is refused (a step that overshoots
    !> into the wall would find states of unphysical compression)
    real(wp), parameter :: h_floor_fraction = 0.5_wp
+   !> GMRES iterations above which the preconditioner is refactorised
+   integer, parameter :: krylov_refresh = 12
 
    !> Memory cap of the dense solver: unknowns per state (N/2 + 1 on an even profile, N
    !> otherwise). The trace holds four n x n matrices: 2049 unknowns take about 135 MB.
@@ -134,17 +136,19 @@ contains
       call stiffness_matrix(problem%grid, problem%kw)
    end subroutine setup_operator
 
-   !> r = W (K (h - f) + sigma(h) + P) at z = (h, P).
-   pure subroutine residual(problem, z, r)
+   !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
+   pure subroutine residual(problem, z, r, dw)
       type(lj_problem_type), intent(in) :: problem
       real(wp), intent(in) :: z(:)
       real(wp), intent(out) :: r(:)
+      real(wp), intent(out), optional :: dw(:)
       real(wp), allocatable :: sig(:), slope(:)
       integer :: n
       n = problem%grid%n
       allocate (sig(n), slope(n))
       call law_eval(problem%law, z(1:n), sig, slope)
       r = matmul(problem%kw, z(1:n) - problem%grid%f) + problem%grid%w*(sig + z(n + 1))
+      if (present(dw)) dw = problem%grid%w*slope
    end subroutine residual
 
    !> Factorise S at z, with q = S^-1 w and the inertia under both controls.
@@ -229,9 +233,11 @@ contains
       a(problem%grid%n + 1) = 1.0_wp
    end function load_constraint
 
-   !> Newton on r(z) = 0, a . z = target from z. The Jacobian is the one in jac (chord
-   !> iterations); it is refactorised at the iterate when they contract slowly.
-   !> status wa_not_converged where the iteration fails (the caller shortens its step).
+   !> Newton on r(z) = 0, a . z = target from z: each step solves the exact Jacobian's
+   !> bordered system by GMRES, preconditioned by the factorisation in jac (made at a
+   !> nearby point); jac is refactorised at the iterate when GMRES needs too many
+   !> iterations. status wa_not_converged where the iteration fails (the caller shortens
+   !> its step).
    subroutine newton(problem, a, target, z, jac, status, n_factor, iterations)
       type(lj_problem_type), intent(in) :: problem
       real(wp), intent(in) :: a(:), target
@@ -241,13 +247,14 @@ contains
       integer, intent(inout) :: n_factor
       !> iterations taken
       integer, intent(out), optional :: iterations
-      integer, parameter :: max_iter = 40
+      integer, parameter :: max_iter = 12
       real(wp), parameter :: tol = 1.0e-12_wp, tol_floor = 1.0e-10_wp
-      real(wp), allocatable :: r(:), dx(:)
+      real(wp), allocatable :: r(:), dx(:), dw(:)
       real(wp) :: dy, e, e_prev, eps, floor_h
-      integer :: n, it, refactor
+      integer :: n, it, refactor, its
+      logical :: ok
       n = problem%grid%n
-      allocate (r(n), dx(n))
+      allocate (r(n), dx(n), dw(n))
       eps = law_zero(problem%law)
       floor_h = h_floor_fraction*eps
       e_prev = huge(1.0_wp)
@@ -255,8 +262,24 @@ contains
       status = wa_not_converged
       do it = 1, max_iter
          if (present(iterations)) iterations = it
-         call residual(problem, z, r)
-         call bordered_solve(problem, jac, a, -r, target - dot_product(a, z), dx, dy)
+         call residual(problem, z, r, dw)
+         call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
+            its)
+         if (ok .and. its > krylov_refresh .and. refactor < 2) then
+            ! a stale preconditioner: refactorise here (one factorisation costs about as
+            ! much as krylov_refresh iterations at n ~ 250, fewer beyond)
+            call factor_at(problem, z, jac)
+            n_factor = n_factor + 1
+            refactor = refactor + 1
+         end if
+         if (.not. ok) then
+            if (refactor >= 2) return
+            call factor_at(problem, z, jac)
+            n_factor = n_factor + 1
+            refactor = refactor + 1
+            call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok)
+            if (.not. ok) return
+         end if
          z(1:n) = z(1:n) + dx
          z(n + 1) = z(n + 1) + dy
          if (any(.not. (z(1:n) > floor_h))) return        ! also catches NaN
@@ -268,35 +291,132 @@ contains
          if (it > 1 .and. e > 0.3_wp*e_prev) then
             ! stagnation at the rounding floor of an ill-conditioned state (beside a fold):
             ! the corrections no longer shrink, and are far below what any output resolves
-            if (e <= tol_floor) then
-               status = wa_ok
-               return
-            end if
-            if (refactor >= 3 .or. e > 2.0_wp*e_prev) return    ! diverging: shorter step
-            call factor_at(problem, z, jac)
-            n_factor = n_factor + 1
-            refactor = refactor + 1
+            if (e <= tol_floor) status = wa_ok
+            if (e <= tol_floor .or. e > 2.0_wp*e_prev .or. it > 6) return
          end if
          e_prev = e
       end do
    end subroutine newton
 
-   !> Unit tangent at a point whose Hessian is factorised in jac, oriented along t_prev
-   !> (the arclength row): [[S, w], [M t_prev]] t = [0, 1], normalised in the metric M.
-   pure subroutine tangent_at(problem, jac, t_prev, t)
+   !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
+   !> preconditioned by the block elimination on the factorisation in jac. ok false when
+   !> the relative residual 1e-11 is not reached in max_krylov iterations.
+   pure subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
-      real(wp), intent(in) :: t_prev(:)
-      real(wp), intent(out) :: t(:)
-      real(wp), allocatable :: a(:), zero(:)
-      real(wp) :: y
+      real(wp), intent(in) :: dw(:), a(:), r1(:), r2
+      real(wp), intent(out) :: x(:), y
+      logical, intent(out) :: ok
+      !> GMRES iterations taken
+      integer, intent(out), optional :: iterations
+      integer, parameter :: m = 40
+      real(wp), parameter :: rtol = 1.0e-11_wp
+      real(wp), allocatable :: v(:, :), h(:, :), g(:), cs(:), sn(:), u(:), pu(:), yk(:)
+      real(wp) :: beta, tmp
+      integer :: n, j, i, k
+      n = problem%grid%n
+      allocate (v(n + 1, m + 1), h(m + 1, m), g(m + 1), cs(m), sn(m), u(n + 1), pu(n + 1))
+      x = 0.0_wp
+      y = 0.0_wp
+      ok = .true.
+      if (present(iterations)) iterations = 0
+      v(1:n, 1) = r1
+      v(n + 1, 1) = r2
+      beta = norm2(v(:, 1))
+      if (beta == 0.0_wp) return
+      v(:, 1) = v(:, 1)/beta
+      g = 0.0_wp
+      g(1) = beta
+      ok = .false.
+      do j = 1, m
+         call precondition(problem, jac, a, v(:, j), pu)
+         call apply_jacobian(problem, dw, a, pu, u)
+         do i = 1, j                                   ! modified Gram-Schmidt
+            h(i, j) = dot_product(v(:, i), u)
+            u = u - h(i, j)*v(:, i)
+         end do
+         h(j + 1, j) = norm2(u)
+         if (h(j + 1, j) > 0.0_wp) v(:, j + 1) = u/h(j + 1, j)
+         do i = 1, j - 1                               ! previous Givens rotations
+            tmp = cs(i)*h(i, j) + sn(i)*h(i + 1, j)
+            h(i + 1, j) = -sn(i)*h(i, j) + cs(i)*h(i + 1, j)
+            h(i, j) = tmp
+         end do
+         tmp = hypot(h(j, j), h(j + 1, j))
+         cs(j) = h(j, j)/tmp
+         sn(j) = h(j + 1, j)/tmp
+         h(j, j) = tmp
+         h(j + 1, j) = 0.0_wp
+         g(j + 1) = -sn(j)*g(j)
+         g(j) = cs(j)*g(j)
+         k = j
+         if (present(iterations)) iterations = j
+         if (abs(g(j + 1)) <= rtol*beta .or. h(j, j) == 0.0_wp) then
+            ok = abs(g(j + 1)) <= rtol*beta
+            exit
+         end if
+      end do
+      if (.not. ok) return
+      allocate (yk(k))
+      do i = k, 1, -1                                  ! back substitution
+         yk(i) = (g(i) - dot_product(h(i, i + 1:k), yk(i + 1:k)))/h(i, i)
+      end do
+      u = matmul(v(:, 1:k), yk)
+      call precondition(problem, jac, a, u, pu)
+      x = pu(1:n)
+      y = pu(n + 1)
+   end subroutine krylov_solve
+
+   !> The bordered Jacobian at the current point times u.
+   pure subroutine apply_jacobian(problem, dw, a, u, ju)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: dw(:), a(:), u(:)
+      real(wp), intent(out) :: ju(:)
       integer :: n
       n = problem%grid%n
-      allocate (a(n + 1), zero(n))
+      ju(1:n) = matmul(problem%kw, u(1:n)) + dw*u(1:n) + problem%grid%w*u(n + 1)
+      ju(n + 1) = dot_product(a, u)
+   end subroutine apply_jacobian
+
+   !> Block elimination of the bordered system on the factorised (nearby) Hessian.
+   pure subroutine precondition(problem, jac, a, u, pu)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: a(:), u(:)
+      real(wp), intent(out) :: pu(:)
+      integer :: n
+      n = problem%grid%n
+      pu(1:n) = u(1:n)
+      call ldl_solve(jac%fact, pu(1:n))
+      pu(n + 1) = (u(n + 1) - dot_product(a(1:n), pu(1:n)))/(a(n + 1) - dot_product(a(1:n), jac%q))
+      pu(1:n) = pu(1:n) - jac%q*pu(n + 1)
+   end subroutine precondition
+
+   !> Unit tangent at z oriented along t_prev (the arclength row):
+   !> [[S, w], [M t_prev]] t = [0, 1], normalised in the metric M; jac: the factorised
+   !> Hessian at z or near it (the preconditioner), refactorised at z if GMRES fails.
+   subroutine tangent_at(problem, jac, z, t_prev, t, n_factor)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: jac
+      real(wp), intent(in) :: z(:), t_prev(:)
+      real(wp), intent(out) :: t(:)
+      integer, intent(inout) :: n_factor
+      real(wp), allocatable :: a(:), zero(:), r(:), dw(:)
+      real(wp) :: y
+      integer :: n
+      logical :: ok
+      n = problem%grid%n
+      allocate (a(n + 1), zero(n), r(n), dw(n))
       a(1:n) = problem%grid%w*t_prev(1:n)/problem%grid%n_period
       a(n + 1) = t_prev(n + 1)
       zero = 0.0_wp
-      call bordered_solve(problem, jac, a, zero, 1.0_wp, t(1:n), y)
+      call residual(problem, z, r, dw)
+      call krylov_solve(problem, jac, dw, a, zero, 1.0_wp, t(1:n), y, ok)
+      if (.not. ok) then
+         call factor_at(problem, z, jac)
+         n_factor = n_factor + 1
+         call bordered_solve(problem, jac, a, zero, 1.0_wp, t(1:n), y)
+      end if
       t(n + 1) = y
       t = t/sqrt(metric_dot(problem, t, t))
    end subroutine tangent_at

@@ -62,9 +62,10 @@ module wa_bem_trace
    !> An accepted point of the trace with its factorised Hessian.
    type :: trace_point
       real(wp), allocatable :: z(:), t(:)
-      type(jacobian_type) :: jac
       type(point_info_type) :: info
       real(wp) :: s = 0.0_wp
+      !> negative eigenvalues under load and gap control
+      integer :: neg_load = 0, neg_gap = 0
    end type trace_point
 
    real(wp), parameter :: ds_min = 1.0e-12_wp
@@ -80,8 +81,9 @@ contains
       type(lj_trace_options), intent(in), optional :: options
       type(lj_trace_options) :: opts
       type(trace_point) :: cur, nxt
+      type(jacobian_type) :: pre
       real(wp) :: ds, turn, eps, p_fc
-      integer :: n, iters
+      integer :: n, iters, n_before, factor_before
       logical :: accept, done
 
       if (present(options)) opts = options
@@ -89,15 +91,17 @@ contains
       eps = law_zero(problem%law)
       branch%n_period = problem%grid%n_period
       branch%n_unknowns = n
-      call far_point(problem, opts, cur, branch%n_factor, status, errmsg)
+      call far_point(problem, opts, cur, pre, branch%n_factor, status, errmsg)
       if (status /= wa_ok) return
-      call branch_append(problem, branch, cur%z, cur%t, cur%info, cur%s, cur%jac, lj_event_end, 0)
+      call branch_append(problem, branch, cur%z, cur%t, cur%info, cur%s, cur%neg_load, &
+         cur%neg_gap, lj_event_end, 0)
       ds = 0.25_wp*cur%info%h_min
       p_fc = huge(1.0_wp)
       done = .false.
       do while (.not. done)
          ds = min(ds, step_cap(cur%info, eps))
-         call advance(problem, cur, ds, nxt, iters, branch%n_factor, status)
+         factor_before = branch%n_factor
+         call advance(problem, cur, ds, nxt, pre, iters, branch%n_factor, status)
          accept = status == wa_ok
          if (accept) then
             turn = acos(max(-1.0_wp, min(1.0_wp, metric_dot(problem, cur%t, nxt%t))))
@@ -114,12 +118,21 @@ contains
             end if
             cycle
          end if
-         call locate_events(problem, cur, nxt, branch)
+         n_before = branch%n
+         call locate_events(problem, cur, nxt, pre, branch)
+         ! the inertia changes only at folds (located above): refresh it where the step
+         ! held an event or the preconditioner was rebuilt away from the curve's points
+         if (branch%n > n_before .or. branch%n_factor > factor_before) then
+            call factor_at(problem, nxt%z, pre)
+            branch%n_factor = branch%n_factor + 1
+            nxt%neg_load = pre%neg_load
+            nxt%neg_gap = pre%neg_gap
+         end if
          if (nxt%info%h_max <= eps .and. p_fc == huge(1.0_wp)) p_fc = max(nxt%info%p, 0.0_wp)
-         done = nxt%info%h_max <= eps .and. nxt%jac%neg_load == 0 .and. nxt%jac%neg_gap == 0 &
+         done = nxt%info%h_max <= eps .and. nxt%neg_load == 0 .and. nxt%neg_gap == 0 &
             .and. nxt%t(n + 1) > 0.0_wp .and. nxt%info%p >= p_fc + opts%p_beyond
-         call branch_append(problem, branch, nxt%z, nxt%t, nxt%info, nxt%s, nxt%jac, &
-            merge(lj_event_end, lj_event_none, done), 0)
+         call branch_append(problem, branch, nxt%z, nxt%t, nxt%info, nxt%s, nxt%neg_load, &
+            nxt%neg_gap, merge(lj_event_end, lj_event_none, done), 0)
          call move_point(nxt, cur)
          if (branch%n >= opts%max_points) then
             call set_error(wa_capacity_too_small, "lj_trace: more than max_points points "// &
@@ -142,11 +155,12 @@ contains
    end function step_cap
 
    !> The first point: the crest gap far_start eps, solved at that mean gap; the
-   !> tangent points to smaller mean gaps.
-   subroutine far_point(problem, opts, pt, n_factor, status, errmsg)
+   !> tangent points to smaller mean gaps. pre: the Hessian factorised there.
+   subroutine far_point(problem, opts, pt, pre, n_factor, status, errmsg)
       type(lj_problem_type), intent(in) :: problem
       type(lj_trace_options), intent(in) :: opts
       type(trace_point), intent(out) :: pt
+      type(jacobian_type), intent(inout) :: pre
       integer, intent(inout) :: n_factor
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
@@ -158,29 +172,34 @@ contains
       pt%z(1:n) = problem%grid%f - minval(problem%grid%f) + opts%far_start*law_zero(problem%law)
       pt%z(n + 1) = 0.0_wp
       gbar = sum(problem%grid%w*pt%z(1:n))/problem%grid%n_period
-      call factor_at(problem, pt%z, pt%jac)
+      call factor_at(problem, pt%z, pre)
       n_factor = n_factor + 1
-      call newton(problem, gap_constraint(problem), gbar, pt%z, pt%jac, status, n_factor)
+      call newton(problem, gap_constraint(problem), gbar, pt%z, pre, status, n_factor)
       if (status /= wa_ok) then
-         call set_error(status, "lj_trace: no converged state far apart", status, errmsg)
+         call set_error(wa_not_converged, "lj_trace: no converged state far apart", status, &
+            errmsg)
          return
       end if
-      call factor_at(problem, pt%z, pt%jac)
+      call factor_at(problem, pt%z, pre)
       n_factor = n_factor + 1
+      pt%neg_load = pre%neg_load
+      pt%neg_gap = pre%neg_gap
       zero = 0.0_wp
-      call bordered_solve(problem, pt%jac, gap_constraint(problem), zero, -1.0_wp, &
+      call bordered_solve(problem, pre, gap_constraint(problem), zero, -1.0_wp, &
          pt%t(1:n), y)
       pt%t(n + 1) = y
       pt%t = pt%t/sqrt(metric_dot(problem, pt%t, pt%t))
       pt%info = point_info(problem, pt%z)
    end subroutine far_point
 
-   !> One predictor-corrector step of length ds from cur (status /= wa_ok: refused).
-   subroutine advance(problem, cur, ds, nxt, iters, n_factor, status)
+   !> One predictor-corrector step of length ds from cur (status /= wa_ok: refused); the
+   !> inertia is carried over (lj_trace refreshes it where it may change).
+   subroutine advance(problem, cur, ds, nxt, pre, iters, n_factor, status)
       type(lj_problem_type), intent(in) :: problem
       type(trace_point), intent(in) :: cur
       real(wp), intent(in) :: ds
       type(trace_point), intent(inout) :: nxt
+      type(jacobian_type), intent(inout) :: pre
       integer, intent(out) :: iters, status
       integer, intent(inout) :: n_factor
       real(wp), allocatable :: a(:)
@@ -190,34 +209,26 @@ contains
       a(1:n) = problem%grid%w*cur%t(1:n)/problem%grid%n_period
       a(n + 1) = cur%t(n + 1)
       nxt%z = cur%z + ds*cur%t
-      nxt%jac = cur%jac
       nf0 = n_factor
-      call newton(problem, a, dot_product(a, nxt%z), nxt%z, nxt%jac, status, n_factor, iters)
+      call newton(problem, a, dot_product(a, nxt%z), nxt%z, pre, status, n_factor, iters)
       if (n_factor > nf0) iters = huge(iters)     ! the corrector needed a new Jacobian
       if (status /= wa_ok) return
-      call factor_at(problem, nxt%z, nxt%jac)
-      n_factor = n_factor + 1
       if (.not. allocated(nxt%t)) allocate (nxt%t(n + 1))
-      call tangent_at(problem, nxt%jac, cur%t, nxt%t)
+      call tangent_at(problem, pre, nxt%z, cur%t, nxt%t, n_factor)
       nxt%info = point_info(problem, nxt%z)
       nxt%s = cur%s + ds
+      nxt%neg_load = cur%neg_load
+      nxt%neg_gap = cur%neg_gap
    end subroutine advance
 
    subroutine move_point(from, to)
       type(trace_point), intent(inout) :: from, to
       call move_alloc(from%z, to%z)
       call move_alloc(from%t, to%t)
-      call move_alloc(from%jac%fact%a, to%jac%fact%a)
-      call move_alloc(from%jac%fact%ipiv, to%jac%fact%ipiv)
-      call move_alloc(from%jac%dw, to%jac%dw)
-      call move_alloc(from%jac%q, to%jac%q)
-      to%jac%fact%n = from%jac%fact%n
-      to%jac%fact%negative = from%jac%fact%negative
-      to%jac%fact%zero = from%jac%fact%zero
-      to%jac%neg_load = from%jac%neg_load
-      to%jac%neg_gap = from%jac%neg_gap
       to%info = from%info
       to%s = from%s
+      to%neg_load = from%neg_load
+      to%neg_gap = from%neg_gap
    end subroutine move_point
 
    !> Value of event function kind at a point: 1 dP/ds, 2 dgbar/ds, 3 h_max - eps,
@@ -239,9 +250,10 @@ contains
 
    !> Locate the events between cur and nxt (sign changes of the event functions) and
    !> append them to the branch in the order of s.
-   subroutine locate_events(problem, cur, nxt, branch)
+   subroutine locate_events(problem, cur, nxt, pre, branch)
       type(lj_problem_type), intent(in) :: problem
       type(trace_point), intent(in) :: cur, nxt
+      type(jacobian_type), intent(inout) :: pre
       type(lj_branch_type), intent(inout) :: branch
       type(trace_point) :: found(4)
       integer :: kinds(4), order(4), nf, kind, i, j, ev, ext, status
@@ -253,7 +265,8 @@ contains
          if (f0*f1 < 0.0_wp) then
             nf = nf + 1
             kinds(nf) = kind
-            call locate_one(problem, kind, cur, nxt, f0, f1, found(nf), branch%n_factor, status)
+            call locate_one(problem, kind, cur, nxt, f0, f1, pre, found(nf), branch%n_factor, &
+               status)
             if (status /= wa_ok) nf = nf - 1     ! (not found: the step's ends bracket it)
          end if
       end do
@@ -280,17 +293,20 @@ contains
             case default
                ev = lj_event_contact; ext = 0
             end select
-            call branch_append(problem, branch, pt%z, pt%t, pt%info, pt%s, pt%jac, ev, ext)
+            call branch_append(problem, branch, pt%z, pt%t, pt%info, pt%s, pt%neg_load, &
+               pt%neg_gap, ev, ext)
          end associate
       end do
    end subroutine locate_events
 
-   !> Brent on the event function along the step from cur to nxt.
-   subroutine locate_one(problem, kind, cur, nxt, f0, f1, pt, n_factor, status)
+   !> Brent on the event function along the step from cur to nxt; the point found gets
+   !> its inertia from a factorisation there (pre is left factorised at it).
+   subroutine locate_one(problem, kind, cur, nxt, f0, f1, pre, pt, n_factor, status)
       type(lj_problem_type), intent(in) :: problem
       integer, intent(in) :: kind
       type(trace_point), intent(in) :: cur, nxt
       real(wp), intent(in) :: f0, f1
+      type(jacobian_type), intent(inout) :: pre
       type(trace_point), intent(inout) :: pt
       integer, intent(inout) :: n_factor
       integer, intent(out) :: status
@@ -304,26 +320,29 @@ contains
       do it = 1, 60
          call brent_propose(solver, s, done, settle=.true.)
          if (done) exit
-         call lj_point_at(problem, cur%z, cur%t, cur%jac, s, pt%z, pt%t, pt%jac, n_factor, status)
+         call lj_point_at(problem, cur%z, cur%t, pre, s, pt%z, pt%t, n_factor, status)
          if (status /= wa_ok) return
          pt%info = point_info(problem, pt%z)
          call brent_accept(solver, event_value(problem, kind, pt))
       end do
       if (.not. done) return
-      call lj_point_at(problem, cur%z, cur%t, cur%jac, solver%b, pt%z, pt%t, pt%jac, n_factor, status)
+      call lj_point_at(problem, cur%z, cur%t, pre, solver%b, pt%z, pt%t, n_factor, status)
       if (status /= wa_ok) return
       pt%info = point_info(problem, pt%z)
       pt%s = cur%s + solver%b
+      call factor_at(problem, pt%z, pre)
+      n_factor = n_factor + 1
+      pt%neg_load = pre%neg_load
+      pt%neg_gap = pre%neg_gap
    end subroutine locate_one
 
-   !> The point at arclength s beyond (z0, t0) on the curve, its factorised Hessian and
-   !> tangent (oriented along t0). jac0: the Hessian factorised at z0.
-   subroutine lj_point_at(problem, z0, t0, jac0, s, z, t, jac, n_factor, status)
+   !> The point at arclength s beyond (z0, t0) on the curve and its tangent (oriented
+   !> along t0); pre: a Hessian factorised near z0 (the preconditioner, may be rebuilt).
+   subroutine lj_point_at(problem, z0, t0, pre, s, z, t, n_factor, status)
       type(lj_problem_type), intent(in) :: problem
       real(wp), intent(in) :: z0(:), t0(:), s
-      type(jacobian_type), intent(in) :: jac0
+      type(jacobian_type), intent(inout) :: pre
       real(wp), allocatable, intent(inout) :: z(:), t(:)
-      type(jacobian_type), intent(inout) :: jac
       integer, intent(inout) :: n_factor
       integer, intent(out) :: status
       real(wp), allocatable :: a(:)
@@ -333,23 +352,19 @@ contains
       a(1:n) = problem%grid%w*t0(1:n)/problem%grid%n_period
       a(n + 1) = t0(n + 1)
       z = z0 + s*t0
-      jac = jac0
-      call newton(problem, a, dot_product(a, z), z, jac, status, n_factor)
+      call newton(problem, a, dot_product(a, z), z, pre, status, n_factor)
       if (status /= wa_ok) return
-      call factor_at(problem, z, jac)
-      n_factor = n_factor + 1
       if (.not. allocated(t)) allocate (t(n + 1))
-      call tangent_at(problem, jac, t0, t)
+      call tangent_at(problem, pre, z, t0, t, n_factor)
    end subroutine lj_point_at
 
    !> Append a point to the branch (arrays grown by doubling).
-   subroutine branch_append(problem, branch, z, t, info, s, jac, event, extremum)
+   subroutine branch_append(problem, branch, z, t, info, s, neg_load, neg_gap, event, extremum)
       type(lj_problem_type), intent(in) :: problem
       type(lj_branch_type), intent(inout) :: branch
       real(wp), intent(in) :: z(:), t(:), s
       type(point_info_type), intent(in) :: info
-      type(jacobian_type), intent(in) :: jac
-      integer, intent(in) :: event, extremum
+      integer, intent(in) :: neg_load, neg_gap, event, extremum
       integer :: k, n
       n = size(z) - 1
       if (.not. allocated(branch%s)) call reserve(branch, 64, n + 1)
@@ -365,10 +380,10 @@ contains
       branch%h_max(k) = info%h_max
       branch%dp(k) = t(n + 1)
       branch%dg(k) = sum(problem%grid%w*t(1:n))/problem%grid%n_period
-      branch%neg_load(k) = jac%neg_load
-      branch%neg_gap(k) = jac%neg_gap
-      branch%stable_load(k) = jac%neg_load == 0 .and. extremum == 0
-      branch%stable_gap(k) = jac%neg_gap == 0 .and. extremum == 0
+      branch%neg_load(k) = neg_load
+      branch%neg_gap(k) = neg_gap
+      branch%stable_load(k) = neg_load == 0 .and. extremum == 0
+      branch%stable_gap(k) = neg_gap == 0 .and. extremum == 0
       branch%event(k) = event
       branch%extremum(k) = extremum
       branch%z(:, k) = z
