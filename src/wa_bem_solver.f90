@@ -54,7 +54,7 @@ module wa_bem_solver
    integer, parameter :: krylov_refresh = 12
 
    !> Memory cap of the dense solver: unknowns per state (N/2 + 1 on an even profile, N
-   !> otherwise). The trace holds four n x n matrices: 2049 unknowns take about 135 MB.
+   !> otherwise). A cycle holds up to three n x n matrices: 2049 unknowns take about 100 MB.
    integer, parameter :: lj_max_unknowns = 2049
    !> Time cap of the automatic grid: one cycle at N = 2048 takes about two minutes on
    !> one core (doc/accuracy-performance.md); a finer automatic grid is refused.
