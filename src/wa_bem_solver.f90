@@ -250,7 +250,7 @@ contains
       integer, parameter :: max_iter = 12
       real(wp), parameter :: tol = 1.0e-12_wp, tol_floor = 1.0e-10_wp
       real(wp), allocatable :: r(:), dx(:), dw(:)
-      real(wp) :: dy, e, e_prev, eps, floor_h
+      real(wp) :: dy, e, e_prev, eps, floor_h, eta
       integer :: n, it, refactor, its
       logical :: ok
       n = problem%grid%n
@@ -263,8 +263,10 @@ contains
       do it = 1, max_iter
          if (present(iterations)) iterations = it
          call residual(problem, z, r, dw)
+         ! inexact Newton: the linear residual need only shrink with the correction
+         eta = max(1.0e-11_wp, min(1.0e-3_wp, e_prev**1.5_wp))
          call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
-            its)
+            its, eta)
          if (ok .and. its > krylov_refresh .and. refactor < 2) then
             ! a stale preconditioner: refactorise here (one factorisation costs about as
             ! much as krylov_refresh iterations at n ~ 250, fewer beyond)
@@ -277,14 +279,17 @@ contains
             call factor_at(problem, z, jac)
             n_factor = n_factor + 1
             refactor = refactor + 1
-            call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok)
+            call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
+               tolerance=eta)
             if (.not. ok) return
          end if
          z(1:n) = z(1:n) + dx
          z(n + 1) = z(n + 1) + dy
          if (any(.not. (z(1:n) > floor_h))) return        ! also catches NaN
          e = max(maxval(abs(dx)/max(abs(z(1:n)), eps)), abs(dy)/max(1.0_wp, abs(z(n + 1))))
-         if (e <= tol) then
+         ! converged: the correction, or (converging fast) the next one e^2/e_prev, is
+         ! below the tolerance
+         if (e <= tol .or. (e <= 1.0e-8_wp .and. e*e <= tol*e_prev .and. e < 0.1_wp*e_prev)) then
             status = wa_ok
             return
          end if
@@ -300,8 +305,8 @@ contains
 
    !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
    !> preconditioned by the block elimination on the factorisation in jac. ok false when
-   !> the relative residual 1e-11 is not reached in max_krylov iterations.
-   pure subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations)
+   !> the relative residual (tolerance, default 1e-11) is not reached in m iterations.
+   pure subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: dw(:), a(:), r1(:), r2
@@ -309,13 +314,17 @@ contains
       logical, intent(out) :: ok
       !> GMRES iterations taken
       integer, intent(out), optional :: iterations
+      !> relative residual asked for (default 1e-11)
+      real(wp), intent(in), optional :: tolerance
       integer, parameter :: m = 40
-      real(wp), parameter :: rtol = 1.0e-11_wp
+      real(wp) :: rtol
       real(wp), allocatable :: v(:, :), h(:, :), g(:), cs(:), sn(:), u(:), pu(:), yk(:)
       real(wp) :: beta, tmp
       integer :: n, j, i, k
       n = problem%grid%n
       allocate (v(n + 1, m + 1), h(m + 1, m), g(m + 1), cs(m), sn(m), u(n + 1), pu(n + 1))
+      rtol = 1.0e-11_wp
+      if (present(tolerance)) rtol = tolerance
       x = 0.0_wp
       y = 0.0_wp
       ok = .true.
