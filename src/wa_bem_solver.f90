@@ -49,7 +49,7 @@ module wa_bem_solver
 
    !> A gap below this fraction of the law's zero is refused (a step that overshoots
    !> into the wall would find states of unphysical compression)
-   real(wp), parameter :: h_floor_fraction = 0.5_wp
+   real(wp), parameter :: h_floor_fraction = 0.1_wp
    !> GMRES iterations above which the preconditioner is refactorised
    integer, parameter :: krylov_refresh = 12
 

@@ -302,11 +302,11 @@ contains
       type(lj_cycle_type) :: cyc
       real(wp) :: alphas(2), ratio(2), rigid, mu
       integer :: k, status
-      alphas = [0.02_wp, 0.01_wp]
+      alphas = [0.003_wp, 0.001_wp]
       do k = 1, 2
          mu = (4*alphas(k)**4)**(1.0_wp/3)/0.01_wp
          call new_params(alphas(k), mu, params, status)
-         call lj_cycle(params, cyc, status, n=256, estimate=.false.)
+         call lj_cycle(params, cyc, status, n=512, estimate=.false.)
          call check(error, status == wa_ok, "lj_cycle")
          if (allocated(error)) return
          rigid = rigid_pull_off(lj_law(alphas(k), mu))
@@ -315,7 +315,7 @@ contains
          if (allocated(error)) return
          ratio(k) = cyc%p_pf/rigid
       end do
-      call check(error, ratio(1) < ratio(2) .and. ratio(2) < 1.0_wp .and. ratio(2) > 0.94_wp, &
+      call check(error, ratio(1) < ratio(2) .and. ratio(2) < 1.0_wp .and. ratio(2) > 0.999_wp, &
          "towards the rigid pull-off")
    end subroutine test_rigid
 
