@@ -29,7 +29,8 @@ contains
          new_unittest("westergaard_limit", test_westergaard), &
          new_unittest("jkr_trend", test_jkr), &
          new_unittest("rigid_limit", test_rigid), &
-         new_unittest("profile_means", test_profile)]
+         new_unittest("profile_means", test_profile), &
+         new_unittest("shifted_profile_whole_period", test_shifted)]
    end subroutine collect_bem
 
    !> A = H diag(lambda) H (H a Householder reflector): inertia and solve.
@@ -364,5 +365,28 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_profile
+
+   !> The sinusoid sampled with a shift (not even about x = 0: solved on the whole period)
+   !> gives the critical loads of the even half-period solution.
+   subroutine test_shifted(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: even, shifted
+      real(wp), allocatable :: samples(:)
+      integer :: status, j
+      character(len=256) :: msg
+      msg = ""
+      samples = [(1 - cos(2*pi*(j/96.0_wp - 0.1_wp)), j = 0, 95)]
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_cycle(params, even, status, msg, n=128, estimate=.false.)
+      call check(error, status == wa_ok, "even: "//trim(msg))
+      if (allocated(error)) return
+      call lj_cycle(params, shifted, status, msg, n=128, profile=samples, estimate=.false.)
+      call check(error, status == wa_ok, "shifted: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, abs(shifted%p_pf - even%p_pf) < 1.0e-9_wp .and. &
+         abs(shifted%p_snap - even%p_snap) < 1.0e-9_wp .and. &
+         abs(shifted%p_fc - even%p_fc) < 1.0e-9_wp, "shift invariance")
+   end subroutine test_shifted
 
 end module test_bem
