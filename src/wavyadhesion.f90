@@ -43,6 +43,15 @@ module wavyadhesion
       gap_critical_values, gap_critical_count, gap_critical_names
    use wa_map_types, only: map_control_load, map_control_gap, map_control_both
    use wa_gapmech, only: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
+   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_potential, law_zero, law_peak
+   use wa_bem_solver, only: lj_problem_type, lj_problem, lj_auto_n, lj_zone_length, &
+      lj_max_unknowns, lj_max_auto_n
+   use wa_bem_path, only: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, &
+      lj_profile, lj_stage_loading, &
+      lj_stage_unloading, lj_stage_approach, lj_stage_retraction, lj_path_jump_start, &
+      lj_path_jump_end, lj_path_full_contact_reached, lj_path_full_contact_left, lj_path_pull_off
+   use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, lj_event_none, &
+      lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
    implicit none
    private
 
@@ -87,5 +96,13 @@ module wavyadhesion
       gap_critical_count, gap_critical_names
    public :: map_control_load, map_control_gap, map_control_both
    public :: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
+   public :: bem_law_type, lj_law, law_eval, law_potential, law_zero, law_peak
+   public :: lj_problem, lj_auto_n, lj_zone_length, lj_max_unknowns, lj_max_auto_n
+   public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, &
+      lj_profile, lj_stage_loading, &
+      lj_stage_unloading, lj_stage_approach, lj_stage_retraction, lj_path_jump_start, &
+      lj_path_jump_end, lj_path_full_contact_reached, lj_path_full_contact_left, lj_path_pull_off
+   public :: lj_problem_type, lj_branch_type, lj_trace_options, lj_trace, lj_event_none, &
+      lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
 
 end module wavyadhesion

@@ -19,6 +19,7 @@ module suites
    use test_gapcritical, only: collect_gapcritical
    use test_mechanism, only: collect_mechanism
    use test_text, only: collect_text
+   use test_bem, only: collect_bem
    implicit none
    private
 
@@ -44,7 +45,8 @@ contains
          new_testsuite("gappath", collect_gappath), &
          new_testsuite("gapcritical", collect_gapcritical), &
          new_testsuite("mechanism", collect_mechanism), &
-         new_testsuite("text", collect_text)]
+         new_testsuite("text", collect_text), &
+         new_testsuite("bem", collect_bem)]
    end subroutine collect_suites
 
 end module suites

@@ -1,0 +1,101 @@
+!> Benchmark of the smooth-adhesion (Lennard-Jones) cycle. Prints figures; asserts nothing.
+!>   fpm run --profile release --example wavyadhesion-lj-benchmark [-- --max-n N]
+!> One cycle = trace from far apart to full contact, both paths, P_fc*, P_pf*, W*.
+program bench_lj
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   use wavyadhesion
+   use wa_kinds, only: wp
+   implicit none
+   integer :: max_n, i_arg, status, k, n, m
+   character(len=64) :: arg
+   character(len=256) :: msg
+   type(params_type) :: params
+   type(lj_cycle_type) :: cyc
+   real(wp) :: t, ln(8), lt(8), slope, values(4, 8)
+   integer :: sizes(8)
+
+   max_n = 1024
+   i_arg = 1
+   do while (i_arg <= command_argument_count())
+      call get_command_argument(i_arg, arg)
+      select case (arg)
+      case ("--help", "-h")
+         write (*, '(a)') "usage: wavyadhesion-lj-benchmark [--max-n N]", &
+            "Times the smooth-adhesion cycle at alpha 0.3, mu 3 (automatic grid, with its", &
+            "error estimate), the cost of one cycle for N = 256 .. max-n (default 1024,", &
+            "at most 4096) with the fitted growth exponent, and the convergence table."
+         stop
+      case ("--max-n")
+         i_arg = i_arg + 1
+         call get_command_argument(i_arg, arg)
+         read (arg, *) max_n
+      case default
+         write (error_unit, '(a)') "wavyadhesion-lj-benchmark: unknown argument '"// &
+            trim(arg)//"' (try --help)"
+         stop 2
+      end select
+      i_arg = i_arg + 1
+   end do
+
+   msg = ""
+   call new_params(0.3_wp, 3.0_wp, params, status)
+   write (*, '(a)') "wavyadhesion "//wa_version//" smooth-adhesion benchmark (one core)"
+   write (*, '(a)') "target (issue): full cycle at alpha 0.3, mu 3, automatic N <= 0.5 s; N = 4096 <= 5 s"
+   t = seconds()
+   call lj_cycle(params, cyc, status, msg, estimate=.false.)
+   t = seconds() - t
+   call report_status("automatic grid")
+   write (*, '(a,i0,a,f8.3,a)') "cycle at the automatic N = ", cyc%n_period, ": ", t, " s (CPU)"
+   t = seconds()
+   call lj_cycle(params, cyc, status, msg)
+   t = seconds() - t
+   write (*, '(a,f8.3,a)') "same with its error estimate (the cycle at N/2 too): ", t, " s (CPU)"
+   write (*, '(a,es12.4,a,es9.2)') "  P_pf* = ", cyc%p_pf, "  +- ", cyc%p_pf_err
+   write (*, '(a,es12.4,a,es9.2)') "  P_fc* = ", cyc%p_fc, "  +- ", cyc%p_fc_err
+   write (*, '(a,es12.4,a,es9.2)') "  snap  = ", cyc%p_snap, "  +- ", cyc%p_snap_err
+   write (*, '(a,es12.4,a,es9.2)') "  W*    = ", cyc%w_star, "  +- ", cyc%w_star_err
+
+   write (*, '(/,a)') "    N   CPU [s]             P_pf*                P_fc*                snap                 W*"
+   m = 0
+   n = 256
+   do while (n <= min(max_n, 4096))
+      t = seconds()
+      call lj_cycle(params, cyc, status, msg, n=n, estimate=.false.)
+      t = seconds() - t
+      call report_status("fixed grid")
+      m = m + 1
+      sizes(m) = n
+      ln(m) = log(real(n, wp))
+      lt(m) = log(t)
+      values(:, m) = [cyc%p_pf, cyc%p_fc, cyc%p_snap, cyc%w_star]
+      write (*, '(i6,f11.3,4es21.12)') n, t, values(:, m)
+      n = 2*n
+   end do
+   if (m >= 2) then
+      slope = (m*sum(ln(1:m)*lt(1:m)) - sum(ln(1:m))*sum(lt(1:m)))/ &
+         (m*sum(ln(1:m)**2) - sum(ln(1:m))**2)
+      write (*, '(a,f6.2)') "fitted growth exponent of the cycle cost in N: ", slope
+      write (*, '(/,a)') "relative change from N/2 to N:   P_pf*      P_fc*      snap       W*"
+      do k = 2, m
+         write (*, '(i6,a,4es11.2)') sizes(k), "                     ", &
+            abs(values(:, k) - values(:, k - 1))/abs(values(:, k))
+      end do
+   end if
+
+contains
+
+   !> Processor time of this (single-threaded) process: the one-core cost, unaffected
+   !> by other processes sharing the machine.
+   real(wp) function seconds()
+      call cpu_time(seconds)
+   end function seconds
+
+   subroutine report_status(what)
+      character(len=*), intent(in) :: what
+      if (status /= wa_ok) then
+         write (error_unit, '(a)') "wavyadhesion-lj-benchmark: "//what//": "//trim(msg)
+         stop 1
+      end if
+   end subroutine report_status
+
+end program bench_lj

@@ -1,0 +1,449 @@
+!> The discretised equations of the smooth-adhesion model and their Newton solution
+!> (doc/theory.md, "Smooth adhesion"). A point of the equilibrium curve is
+!> z = (h_1..h_n, P*): the gaps at the unknown nodes and the mean load. Its equations are
+!> the stationarity of the energy per period
+!>   E = (1/2) mean(u K u) + mean(phi(h)) + P* gbar*,   u = h - f - delta,
+!> with respect to every nodal gap, times N: r = W (K (h - f) + sigma(h) + P*) = 0
+!> (W: node weights), whose Jacobian in h is the symmetric Hessian S = W (K + diag sigma').
+!> A further linear equation a . z = target closes the system: a fixed mean gap, a fixed
+!> load, or the pseudo-arclength hyperplane. The bordered system is solved by block
+!> elimination on the Bunch-Kaufman factorisation of S, with one step of refinement
+!> (stable at folds, where S is singular).
+module wa_bem_solver
+   use wa_kinds, only: wp
+   use wa_status, only: wa_ok, wa_not_converged, wa_invalid_argument, wa_capacity_too_small, &
+      set_error
+   use wa_params, only: params_type, check_params
+   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_zero, law_peak
+   use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix, measure_below, peak_value
+   use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
+   implicit none
+   private
+
+   public :: lj_problem_type, jacobian_type, point_info_type
+   public :: lj_problem, lj_auto_n, lj_zone_length, lj_max_unknowns, lj_max_auto_n
+   public :: setup_operator, residual, factor_at, bordered_solve, newton, tangent_at, &
+      point_info, metric_dot, gap_constraint, load_constraint
+
+   !> The discretised problem: law, grid and the elastic stiffness W K.
+   type :: lj_problem_type
+      type(bem_law_type) :: law
+      type(bem_grid_type) :: grid
+      real(wp), allocatable :: kw(:, :)
+   end type lj_problem_type
+
+   !> The Hessian S factorised at one point, with q = S^-1 w for the bordered solves.
+   type :: jacobian_type
+      type(ldl_type) :: fact
+      real(wp), allocatable :: dw(:), q(:)
+      !> negative eigenvalues of the Hessians under load control (S) and gap control
+      !> (S on mean-gap-preserving variations)
+      integer :: neg_load = 0, neg_gap = 0
+   end type jacobian_type
+
+   !> What a point reports.
+   type :: point_info_type
+      real(wp) :: p = 0.0_wp, gbar = 0.0_wp, a_star = 0.0_wp, b_star = 0.0_wp, &
+         h_min = 0.0_wp, h_max = 0.0_wp
+   end type point_info_type
+
+   !> A gap below this fraction of the law's zero is refused (a step that overshoots
+   !> into the wall would find states of unphysical compression)
+   real(wp), parameter :: h_floor_fraction = 0.1_wp
+   !> GMRES iterations above which the preconditioner is refactorised
+   integer, parameter :: krylov_refresh = 12
+
+   !> Memory cap of the dense solver: unknowns per state (N/2 + 1 on an even profile, N
+   !> otherwise). A cycle holds up to three n x n matrices: 2049 unknowns take about 100 MB.
+   integer, parameter :: lj_max_unknowns = 2049
+   !> Time cap of the automatic grid: one cycle at N = 2048 takes about two minutes on
+   !> one core (doc/accuracy-performance.md); a finer automatic grid is refused.
+   integer, parameter :: lj_max_auto_n = 2048
+   !> Grid points the automatic N puts on the interaction zone
+   real(wp), parameter :: points_per_zone = 12.0_wp
+
+contains
+
+   !> Length over L of the interaction zone, alpha^2/(2 Sigma0^2) (the cohesive zone of
+   !> a crack in the JKR regime, doc/theory.md "Smooth adhesion").
+   pure function lj_zone_length(params) result(ell)
+      type(params_type), intent(in) :: params
+      real(wp) :: ell
+      ell = params%alpha**2/(2.0_wp*params%sigma0**2)
+   end function lj_zone_length
+
+   !> The automatic grid: the smallest power of two >= 128 that puts points_per_zone
+   !> points on the interaction zone; 0 where that exceeds lj_max_auto_n.
+   pure function lj_auto_n(params) result(n)
+      type(params_type), intent(in) :: params
+      integer :: n
+      real(wp) :: need
+      need = points_per_zone/lj_zone_length(params)
+      n = 128
+      do while (n < need .and. n <= lj_max_auto_n)
+         n = 2*n
+      end do
+      if (n > lj_max_auto_n) n = 0
+   end function lj_auto_n
+
+   !> The discretised problem of (alpha, mu) with the LJ law: n points per period (0 or
+   !> absent: automatic), the profile as samples of one period over Delta (absent: the
+   !> sinusoid 1 - cos 2 pi x). wa_invalid_argument for bad parameters (mu = 0 has no
+   !> LJ law), wa_capacity_too_small where the grid exceeds the caps.
+   subroutine lj_problem(params, problem, status, errmsg, n, profile)
+      type(params_type), intent(in) :: params
+      type(lj_problem_type), intent(out) :: problem
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, intent(in), optional :: n
+      real(wp), intent(in), optional :: profile(:)
+      integer :: np
+      character(len=24) :: text
+      call check_params(params, status, errmsg)
+      if (status /= wa_ok) return
+      if (params%mu <= 0.0_wp) then
+         call set_error(wa_invalid_argument, "mu = 0 has no Lennard-Jones law (its range "// &
+            "would be infinite): mu must be > 0", status, errmsg)
+         return
+      end if
+      np = 0
+      if (present(n)) np = n
+      if (np == 0) then
+         np = lj_auto_n(params)
+         if (np == 0) then
+            write (text, '(es10.3)') lj_zone_length(params)
+            call set_error(wa_capacity_too_small, "lj: the interaction zone ("// &
+               trim(adjustl(text))//" of a period) needs more than the automatic grid's "// &
+               "cap of 2048 points per period; pass n explicitly (at most 4096)", status, errmsg)
+            return
+         end if
+      end if
+      call new_grid(np, problem%grid, status, errmsg, profile)
+      if (status /= wa_ok) return
+      if (problem%grid%n > lj_max_unknowns) then
+         call set_error(wa_capacity_too_small, "lj: n gives more than 2049 unknowns (n <= "// &
+            "4096 on an even profile, n <= 2048 otherwise)", status, errmsg)
+         return
+      end if
+      problem%law = lj_law(params%alpha, params%mu)
+      call setup_operator(problem)
+   end subroutine lj_problem
+
+   !> Fill problem%kw for problem%grid.
+   subroutine setup_operator(problem)
+      type(lj_problem_type), intent(inout) :: problem
+      allocate (problem%kw(problem%grid%n, problem%grid%n))
+      call stiffness_matrix(problem%grid, problem%kw)
+   end subroutine setup_operator
+
+   !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
+   pure subroutine residual(problem, z, r, dw)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: z(:)
+      real(wp), intent(out) :: r(:)
+      real(wp), intent(out), optional :: dw(:)
+      real(wp), allocatable :: sig(:), slope(:)
+      integer :: n
+      n = problem%grid%n
+      allocate (sig(n), slope(n))
+      call law_eval(problem%law, z(1:n), sig, slope)
+      r = matmul(problem%kw, z(1:n) - problem%grid%f) + problem%grid%w*(sig + z(n + 1))
+      if (present(dw)) dw = problem%grid%w*slope
+   end subroutine residual
+
+   !> Factorise S at z, with q = S^-1 w and the inertia under both controls.
+   pure subroutine factor_at(problem, z, jac)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: z(:)
+      type(jacobian_type), intent(inout) :: jac
+      real(wp), allocatable :: sig(:)
+      integer :: n, i
+      n = problem%grid%n
+      allocate (sig(n))
+      if (.not. allocated(jac%dw)) allocate (jac%dw(n), jac%q(n))
+      call law_eval(problem%law, z(1:n), sig, jac%dw)
+      jac%dw = problem%grid%w*jac%dw
+      if (.not. allocated(jac%fact%a)) allocate (jac%fact%a(n, n))
+      jac%fact%a = problem%kw
+      do i = 1, n
+         jac%fact%a(i, i) = jac%fact%a(i, i) + jac%dw(i)
+      end do
+      call ldl_factor(jac%fact)
+      jac%q = problem%grid%w
+      call ldl_solve(jac%fact, jac%q)
+      jac%neg_load = jac%fact%negative + jac%fact%zero
+      ! inertia of [[S, w], [w^T, 0]] = inertia(S) + inertia(-w^T S^-1 w), which holds
+      ! the gap-control Hessian's plus one positive and one negative eigenvalue
+      jac%neg_gap = jac%neg_load - 1
+      if (dot_product(problem%grid%w, jac%q) > 0.0_wp) jac%neg_gap = jac%neg_gap + 1
+      jac%neg_gap = max(jac%neg_gap, 0)
+   end subroutine factor_at
+
+   !> S_frozen x + w y = r1, a(1:n) . x + a(n+1) y = r2 (S as factorised in jac).
+   pure subroutine bordered_solve(problem, jac, a, r1, r2, x, y)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: a(:), r1(:), r2
+      real(wp), intent(out) :: x(:), y
+      real(wp), allocatable :: e1(:), dx(:)
+      real(wp) :: e2, dy
+      integer :: n, pass
+      n = problem%grid%n
+      allocate (e1(n), dx(n))
+      e1 = r1
+      e2 = r2
+      x = 0.0_wp
+      y = 0.0_wp
+      do pass = 1, 2           ! block elimination, then one refinement with its residual
+         dx = e1
+         call ldl_solve(jac%fact, dx)
+         dy = (e2 - dot_product(a(1:n), dx))/(a(n + 1) - dot_product(a(1:n), jac%q))
+         dx = dx - jac%q*dy
+         x = x + dx
+         y = y + dy
+         if (pass == 2) exit
+         e1 = r1 - matmul(problem%kw, x) - jac%dw*x - problem%grid%w*y
+         e2 = r2 - dot_product(a(1:n), x) - a(n + 1)*y
+      end do
+   end subroutine bordered_solve
+
+   !> a . z in the arclength metric (weights w/N on the gaps, 1 on the load).
+   pure function metric_dot(problem, u, v) result(d)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: u(:), v(:)
+      real(wp) :: d
+      integer :: n
+      n = problem%grid%n
+      d = sum(problem%grid%w*u(1:n)*v(1:n))/problem%grid%n_period + u(n + 1)*v(n + 1)
+   end function metric_dot
+
+   !> The row a of the constraint "mean gap fixed" (a . z = gbar*).
+   pure function gap_constraint(problem) result(a)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp) :: a(problem%grid%n + 1)
+      a(1:problem%grid%n) = problem%grid%w/problem%grid%n_period
+      a(problem%grid%n + 1) = 0.0_wp
+   end function gap_constraint
+
+   !> The row a of the constraint "load fixed" (a . z = P*).
+   pure function load_constraint(problem) result(a)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp) :: a(problem%grid%n + 1)
+      a = 0.0_wp
+      a(problem%grid%n + 1) = 1.0_wp
+   end function load_constraint
+
+   !> Newton on r(z) = 0, a . z = target from z: each step solves the exact Jacobian's
+   !> bordered system by GMRES, preconditioned by the factorisation in jac (made at a
+   !> nearby point); jac is refactorised at the iterate when GMRES needs too many
+   !> iterations. status wa_not_converged where the iteration fails (the caller shortens
+   !> its step).
+   subroutine newton(problem, a, target, z, jac, status, n_factor, iterations)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: a(:), target
+      real(wp), intent(inout) :: z(:)
+      type(jacobian_type), intent(inout) :: jac
+      integer, intent(out) :: status
+      integer, intent(inout) :: n_factor
+      !> iterations taken
+      integer, intent(out), optional :: iterations
+      integer, parameter :: max_iter = 12
+      real(wp), parameter :: tol = 1.0e-12_wp, tol_floor = 1.0e-10_wp
+      real(wp), allocatable :: r(:), dx(:), dw(:)
+      real(wp) :: dy, e, e_prev, eps, floor_h, eta
+      integer :: n, it, refactor, its
+      logical :: ok
+      n = problem%grid%n
+      allocate (r(n), dx(n), dw(n))
+      eps = law_zero(problem%law)
+      floor_h = h_floor_fraction*eps
+      e_prev = huge(1.0_wp)
+      refactor = 0
+      status = wa_not_converged
+      do it = 1, max_iter
+         if (present(iterations)) iterations = it
+         call residual(problem, z, r, dw)
+         ! inexact Newton: the linear residual need only shrink with the correction
+         eta = max(1.0e-11_wp, min(1.0e-3_wp, e_prev**1.5_wp))
+         call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
+            its, eta)
+         if (ok .and. its > krylov_refresh .and. refactor < 2) then
+            ! a stale preconditioner: refactorise here (one factorisation costs about as
+            ! much as krylov_refresh iterations at n ~ 250, fewer beyond)
+            call factor_at(problem, z, jac)
+            n_factor = n_factor + 1
+            refactor = refactor + 1
+         end if
+         if (.not. ok) then
+            if (refactor >= 2) return
+            call factor_at(problem, z, jac)
+            n_factor = n_factor + 1
+            refactor = refactor + 1
+            call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
+               tolerance=eta)
+            if (.not. ok) return
+         end if
+         z(1:n) = z(1:n) + dx
+         z(n + 1) = z(n + 1) + dy
+         if (any(.not. (z(1:n) > floor_h))) return        ! also catches NaN
+         e = max(maxval(abs(dx)/max(abs(z(1:n)), eps)), abs(dy)/max(1.0_wp, abs(z(n + 1))))
+         ! converged: the correction, or (converging fast) the next one e^2/e_prev, is
+         ! below the tolerance
+         if (e <= tol .or. (e <= 1.0e-8_wp .and. e*e <= tol*e_prev .and. e < 0.1_wp*e_prev)) then
+            status = wa_ok
+            return
+         end if
+         if (it > 1 .and. e > 0.3_wp*e_prev) then
+            ! stagnation at the rounding floor of an ill-conditioned state (beside a fold):
+            ! the corrections no longer shrink, and are far below what any output resolves
+            if (e <= tol_floor) status = wa_ok
+            if (e <= tol_floor .or. e > 2.0_wp*e_prev .or. it > 6) return
+         end if
+         e_prev = e
+      end do
+   end subroutine newton
+
+   !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
+   !> preconditioned by the block elimination on the factorisation in jac. ok false when
+   !> the relative residual (tolerance, default 1e-11) is not reached in m iterations.
+   pure subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: dw(:), a(:), r1(:), r2
+      real(wp), intent(out) :: x(:), y
+      logical, intent(out) :: ok
+      !> GMRES iterations taken
+      integer, intent(out), optional :: iterations
+      !> relative residual asked for (default 1e-11)
+      real(wp), intent(in), optional :: tolerance
+      integer, parameter :: m = 40
+      real(wp) :: rtol
+      real(wp), allocatable :: v(:, :), h(:, :), g(:), cs(:), sn(:), u(:), pu(:), yk(:)
+      real(wp) :: beta, tmp
+      integer :: n, j, i, k
+      n = problem%grid%n
+      allocate (v(n + 1, m + 1), h(m + 1, m), g(m + 1), cs(m), sn(m), u(n + 1), pu(n + 1))
+      rtol = 1.0e-11_wp
+      if (present(tolerance)) rtol = tolerance
+      x = 0.0_wp
+      y = 0.0_wp
+      ok = .true.
+      if (present(iterations)) iterations = 0
+      v(1:n, 1) = r1
+      v(n + 1, 1) = r2
+      beta = norm2(v(:, 1))
+      if (beta == 0.0_wp) return
+      v(:, 1) = v(:, 1)/beta
+      g = 0.0_wp
+      g(1) = beta
+      ok = .false.
+      do j = 1, m
+         call precondition(problem, jac, a, v(:, j), pu)
+         call apply_jacobian(problem, dw, a, pu, u)
+         do i = 1, j                                   ! modified Gram-Schmidt
+            h(i, j) = dot_product(v(:, i), u)
+            u = u - h(i, j)*v(:, i)
+         end do
+         h(j + 1, j) = norm2(u)
+         if (h(j + 1, j) > 0.0_wp) v(:, j + 1) = u/h(j + 1, j)
+         do i = 1, j - 1                               ! previous Givens rotations
+            tmp = cs(i)*h(i, j) + sn(i)*h(i + 1, j)
+            h(i + 1, j) = -sn(i)*h(i, j) + cs(i)*h(i + 1, j)
+            h(i, j) = tmp
+         end do
+         tmp = hypot(h(j, j), h(j + 1, j))
+         cs(j) = h(j, j)/tmp
+         sn(j) = h(j + 1, j)/tmp
+         h(j, j) = tmp
+         h(j + 1, j) = 0.0_wp
+         g(j + 1) = -sn(j)*g(j)
+         g(j) = cs(j)*g(j)
+         k = j
+         if (present(iterations)) iterations = j
+         if (abs(g(j + 1)) <= rtol*beta .or. h(j, j) == 0.0_wp) then
+            ok = abs(g(j + 1)) <= rtol*beta
+            exit
+         end if
+      end do
+      if (.not. ok) return
+      allocate (yk(k))
+      do i = k, 1, -1                                  ! back substitution
+         yk(i) = (g(i) - dot_product(h(i, i + 1:k), yk(i + 1:k)))/h(i, i)
+      end do
+      u = matmul(v(:, 1:k), yk)
+      call precondition(problem, jac, a, u, pu)
+      x = pu(1:n)
+      y = pu(n + 1)
+   end subroutine krylov_solve
+
+   !> The bordered Jacobian at the current point times u.
+   pure subroutine apply_jacobian(problem, dw, a, u, ju)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: dw(:), a(:), u(:)
+      real(wp), intent(out) :: ju(:)
+      integer :: n
+      n = problem%grid%n
+      ju(1:n) = matmul(problem%kw, u(1:n)) + dw*u(1:n) + problem%grid%w*u(n + 1)
+      ju(n + 1) = dot_product(a, u)
+   end subroutine apply_jacobian
+
+   !> Block elimination of the bordered system on the factorised (nearby) Hessian.
+   pure subroutine precondition(problem, jac, a, u, pu)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: a(:), u(:)
+      real(wp), intent(out) :: pu(:)
+      integer :: n
+      n = problem%grid%n
+      pu(1:n) = u(1:n)
+      call ldl_solve(jac%fact, pu(1:n))
+      pu(n + 1) = (u(n + 1) - dot_product(a(1:n), pu(1:n)))/(a(n + 1) - dot_product(a(1:n), jac%q))
+      pu(1:n) = pu(1:n) - jac%q*pu(n + 1)
+   end subroutine precondition
+
+   !> Unit tangent at z oriented along t_prev (the arclength row):
+   !> [[S, w], [M t_prev]] t = [0, 1], normalised in the metric M; jac: the factorised
+   !> Hessian at z or near it (the preconditioner), refactorised at z if GMRES fails.
+   subroutine tangent_at(problem, jac, z, t_prev, t, n_factor)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: jac
+      real(wp), intent(in) :: z(:), t_prev(:)
+      real(wp), intent(out) :: t(:)
+      integer, intent(inout) :: n_factor
+      real(wp), allocatable :: a(:), zero(:), r(:), dw(:)
+      real(wp) :: y
+      integer :: n
+      logical :: ok
+      n = problem%grid%n
+      allocate (a(n + 1), zero(n), r(n), dw(n))
+      a(1:n) = problem%grid%w*t_prev(1:n)/problem%grid%n_period
+      a(n + 1) = t_prev(n + 1)
+      zero = 0.0_wp
+      call residual(problem, z, r, dw)
+      call krylov_solve(problem, jac, dw, a, zero, 1.0_wp, t(1:n), y, ok)
+      if (.not. ok) then
+         call factor_at(problem, z, jac)
+         n_factor = n_factor + 1
+         call bordered_solve(problem, jac, a, zero, 1.0_wp, t(1:n), y)
+      end if
+      t(n + 1) = y
+      t = t/sqrt(metric_dot(problem, t, t))
+   end subroutine tangent_at
+
+   !> Load, mean gap, a* (half the measure where h <= eps), b* (half the measure where
+   !> h <= the gap of the peak tension), smallest and largest gap.
+   pure function point_info(problem, z) result(info)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: z(:)
+      type(point_info_type) :: info
+      integer :: n
+      n = problem%grid%n
+      info%p = z(n + 1)
+      info%gbar = sum(problem%grid%w*z(1:n))/problem%grid%n_period
+      info%a_star = 0.5_wp*measure_below(problem%grid, z(1:n), law_zero(problem%law))
+      info%b_star = 0.5_wp*measure_below(problem%grid, z(1:n), law_peak(problem%law))
+      info%h_min = peak_value(problem%grid, z(1:n), -1)
+      info%h_max = peak_value(problem%grid, z(1:n), 1)
+   end function point_info
+
+end module wa_bem_solver

@@ -1,0 +1,392 @@
+!> The smooth-adhesion (Lennard-Jones) model, src/wa_bem_*.f90: the dense symmetric
+!> indefinite factorisation against matrices of known spectrum, the elastic stiffness
+!> against its Fourier symbol, the law against its closed forms, and the traced model
+!> against its limits (Westergaard as alpha -> 0, JKR as mu -> infinity), the grid
+!> convergence at alpha 0.3, mu 3, and the prototype's snap at alpha 0.3, mu 1.
+module test_bem
+   use wavyadhesion
+   use wa_kinds, only: wp, pi
+   use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
+   use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix
+   use harness, only: error_type, unittest_type, new_unittest, check, check_close
+   implicit none
+   private
+
+   public :: collect_bem
+
+contains
+
+   subroutine collect_bem(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest("ldl_inertia_and_solve", test_ldl), &
+         new_unittest("stiffness_symbol", test_stiffness), &
+         new_unittest("law_closed_forms", test_law), &
+         new_unittest("bad_input", test_bad_input), &
+         new_unittest("trace_stability_and_folds", test_trace), &
+         new_unittest("prototype_snap_alpha03_mu1", test_snap), &
+         new_unittest("grid_convergence_alpha03_mu3", test_convergence), &
+         new_unittest("westergaard_limit", test_westergaard), &
+         new_unittest("jkr_trend", test_jkr), &
+         new_unittest("rigid_limit", test_rigid), &
+         new_unittest("profile_means", test_profile), &
+         new_unittest("shifted_profile_whole_period", test_shifted)]
+   end subroutine collect_bem
+
+   !> A = H diag(lambda) H (H a Householder reflector): inertia and solve.
+   subroutine test_ldl(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 40
+      type(ldl_type) :: fact
+      real(wp) :: v(n), lam(n), h(n, n), a(n, n), x(n), b(n)
+      integer :: i, k, case
+      do case = 1, 3
+         do i = 1, n
+            v(i) = sin(1.7_wp*i + case) + 0.3_wp
+            lam(i) = (-1.0_wp)**(i + case)*(0.5_wp + mod(7*i, 11))
+         end do
+         if (case == 3) lam(5) = -1.0e-9_wp         ! a nearly singular direction
+         h = 0.0_wp
+         do i = 1, n
+            h(i, i) = 1.0_wp
+         end do
+         do k = 1, n
+            h(:, k) = h(:, k) - 2.0_wp*v*v(k)/dot_product(v, v)
+         end do
+         do k = 1, n
+            a(:, k) = matmul(h, lam*h(k, :))
+         end do
+         fact%a = a
+         call ldl_factor(fact)
+         call check(error, fact%negative == count(lam < 0.0_wp), "inertia of a known spectrum")
+         if (allocated(error)) return
+         x = [(cos(0.3_wp*i), i = 1, n)]
+         b = matmul(a, x)
+         call ldl_solve(fact, b)
+         if (case < 3) then
+            call check(error, maxval(abs(b - x)) < 1.0e-12_wp, "solve")
+            if (allocated(error)) return
+         end if
+      end do
+   end subroutine test_ldl
+
+   !> The nodal stiffness applied to cos(2 pi k x) gives |k| cos(2 pi k x) (the Fourier
+   !> symbol, Nyquist mode included), on the whole period and folded on the half period.
+   subroutine test_stiffness(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: np = 32
+      type(bem_grid_type) :: grid
+      real(wp), allocatable :: kw(:, :), c(:), samples(:)
+      integer :: k, status, j
+      samples = [(sin(2*pi*j/np) + 0.2_wp*cos(4*pi*j/np), j = 0, np - 1)]   ! not even
+      call new_grid(np, grid, status, profile=samples)
+      call check(error, .not. grid%even .and. grid%n == np, "odd profile: whole period")
+      if (allocated(error)) return
+      allocate (kw(np, np))
+      call stiffness_matrix(grid, kw)
+      do k = 0, np/2
+         c = cos(2*pi*k*grid%x)
+         call check(error, maxval(abs(matmul(kw, c) - k*c)) < 1.0e-12_wp*np, "symbol |k|")
+         if (allocated(error)) return
+      end do
+      call new_grid(np, grid, status)
+      deallocate (kw)
+      allocate (kw(grid%n, grid%n))
+      call stiffness_matrix(grid, kw)
+      do k = 0, np/2
+         c = cos(2*pi*k*grid%x)
+         call check(error, maxval(abs(matmul(kw, c)/grid%w - k*c)) < 1.0e-12_wp*np, &
+            "folded symbol |k|")
+         if (allocated(error)) return
+      end do
+      call check(error, abs(grid%fbar - 1.0_wp) < 1.0e-14_wp, "mean of 1 - cos")
+   end subroutine test_stiffness
+
+   !> LJ 3-9: phi(eps) = -dgamma, sigma(eps) = 0, peak 16/(9 sqrt 3) dgamma/eps at
+   !> 3^(1/6) eps, slope = central difference; eps/Delta = (4 alpha^4)^(1/3)/mu.
+   subroutine test_law(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(bem_law_type) :: law
+      real(wp) :: s, d, sp, dp, sm, dm, h
+      law = lj_law(0.3_wp, 3.0_wp)
+      call check_close(error, law%eps, (4*0.3_wp**4)**(1.0_wp/3)/3, 1.0e-15_wp, what="eps")
+      if (allocated(error)) return
+      call check_close(error, law_potential(law, law%eps), -law%dgamma, 1.0e-15_wp, what="phi(eps)")
+      if (allocated(error)) return
+      call law_eval(law, law_peak(law), s, d)
+      call check_close(error, s, 16.0_wp/(9*sqrt(3.0_wp))*law%dgamma/law%eps, 1.0e-14_wp, what="peak")
+      if (allocated(error)) return
+      call check(error, abs(d) < 1.0e-12_wp*s/law%eps, "slope zero at the peak")
+      if (allocated(error)) return
+      h = 1.3_wp*law%eps
+      call law_eval(law, h, s, d)
+      call law_eval(law, h*(1 + 1.0e-6_wp), sp, dp)
+      call law_eval(law, h*(1 - 1.0e-6_wp), sm, dm)
+      call check_close(error, d, (sp - sm)/(2.0e-6_wp*h), 1.0e-8_wp, what="slope")
+      if (allocated(error)) return
+      call check_close(error, s, (law_potential(law, h*(1 + 1.0e-6_wp)) - &
+         law_potential(law, h*(1 - 1.0e-6_wp)))/(2.0e-6_wp*h), 1.0e-8_wp, what="dphi/dh")
+   end subroutine test_law
+
+   subroutine test_bad_input(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      integer :: status
+      character(len=256) :: msg
+      msg = ""
+      call new_params(0.3_wp, 0.0_wp, params, status)
+      call lj_problem(params, problem, status, msg)
+      call check(error, status == wa_invalid_argument .and. index(msg, "mu") > 0, "mu = 0")
+      if (allocated(error)) return
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_problem(params, problem, status, msg, n=7)
+      call check(error, status == wa_invalid_argument .and. index(msg, "n") > 0, "odd n")
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n=8192)
+      call check(error, status == wa_capacity_too_small, "memory cap")
+      if (allocated(error)) return
+      call new_params(0.3_wp, 30.0_wp, params, status)
+      call lj_problem(params, problem, status, msg)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "2048") > 0, &
+         "automatic grid cap: "//trim(msg))
+   end subroutine test_bad_input
+
+   !> Far apart: unstable under load control, stable under gap control; the end: stable
+   !> under both in full contact; the inertia changes by one across each fold of its
+   !> control and nowhere else; s increases.
+   subroutine test_trace(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      integer :: status, i, last_load, last_gap
+      call new_params(0.3_wp, 3.0_wp, params, status)
+      call lj_problem(params, problem, status, n=256)
+      call lj_trace(problem, br, status)
+      call check(error, status == wa_ok, "trace")
+      if (allocated(error)) return
+      call check(error, br%neg_load(1) == 1 .and. br%neg_gap(1) == 0, "far apart")
+      if (allocated(error)) return
+      call check(error, br%neg_load(br%n) == 0 .and. br%neg_gap(br%n) == 0 .and. &
+         br%a_star(br%n) == 0.5_wp .and. br%p_star(br%n) > 0.0_wp, "end in full contact")
+      if (allocated(error)) return
+      call check(error, all(br%s(2:br%n) > br%s(1:br%n - 1)), "arclength increases")
+      if (allocated(error)) return
+      last_load = br%neg_load(1); last_gap = br%neg_gap(1)
+      do i = 2, br%n
+         if (br%extremum(i) /= 0) cycle
+         if (br%neg_load(i) /= last_load) then
+            call check(error, abs(br%neg_load(i) - last_load) == 1 .and. &
+               any(abs(br%extremum(1:i)) == 1), "load inertia changes at a fold")
+            if (allocated(error)) return
+         end if
+         if (br%neg_gap(i) /= last_gap) then
+            call check(error, abs(br%neg_gap(i) - last_gap) == 1 .and. &
+               any(abs(br%extremum(1:i)) == 2), "gap inertia changes at a fold")
+            if (allocated(error)) return
+         end if
+         last_load = br%neg_load(i); last_gap = br%neg_gap(i)
+      end do
+      call check(error, count(br%extremum == 1) >= 1 .and. count(br%extremum == -1) >= 1 .and. &
+         count(br%extremum == 2) >= 1 .and. count(br%extremum == -2) >= 1, "folds of both kinds")
+   end subroutine test_trace
+
+   !> alpha 0.3, mu 1: loading jumps at the maximum P* = 0.3988 (the prototype's snap near
+   !> 0.40; DW reaches full contact gradually at 0.78), no jump under gap control (W* = 0).
+   subroutine test_snap(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      integer :: status
+      character(len=256) :: msg
+      msg = ""
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_cycle(params, cyc, status, msg)
+      call check(error, status == wa_ok, "lj_cycle: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, abs(cyc%p_snap - 0.3988_wp) < 1.0e-3_wp, "snap near 0.40")
+      if (allocated(error)) return
+      call check(error, cyc%p_snap_err < 1.0e-8_wp .and. cyc%p_pf_err < 1.0e-6_wp, "resolved")
+      if (allocated(error)) return
+      call check(error, abs(cyc%w_star) < 1.0e-10_wp .and. cyc%pf_by_jump, "no gap jump")
+   end subroutine test_snap
+
+   !> alpha 0.3, mu 3 at the automatic grid (512): P_pf* and P_fc* agree with the grid of
+   !> half as many points to 1e-7 relative, the snap load to 1e-4 (N = 256 puts 6.5 points
+   !> on the interaction zone; at 512 against 1024 it agrees to 3e-9: study/ and doc).
+   subroutine test_convergence(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      integer :: status
+      character(len=256) :: msg
+      msg = ""
+      call new_params(0.3_wp, 3.0_wp, params, status)
+      call lj_cycle(params, cyc, status, msg)
+      call check(error, status == wa_ok .and. cyc%n_period == 512, "lj_cycle: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, cyc%p_pf_err < 1.0e-7_wp*abs(cyc%p_pf) .and. &
+         cyc%p_fc_err < 1.0e-7_wp*abs(cyc%p_fc) .and. cyc%p_snap_err < 1.0e-4_wp*abs(cyc%p_snap), &
+         "P_pf, P_fc, snap: N and N/2 within 1e-7")
+      if (allocated(error)) return
+      call check(error, cyc%w_star > 0.0_wp .and. cyc%w_star_err < 1.0e-4_wp*cyc%w_star, "W*")
+   end subroutine test_convergence
+
+   !> alpha -> 0 at fixed mu: the stable contact states approach Westergaard's
+   !> gbar* = 1 - P* + P* ln P*; the offset is of the order of the range eps and shrinks
+   !> with it.
+   subroutine test_westergaard(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      integer :: status, k, i
+      real(wp) :: dev(2), p, alphas(2)
+      character(len=256) :: msg
+      alphas = [0.02_wp, 0.01_wp]
+      do k = 1, 2
+         call new_params(alphas(k), 1.0_wp, params, status)
+         call lj_problem(params, problem, status, n=256)
+         msg = ""
+         call lj_trace(problem, br, status, msg)
+         call check(error, status == wa_ok, "trace: "//trim(msg))
+         if (allocated(error)) return
+         dev(k) = 0.0_wp
+         do i = 1, br%n
+            p = br%p_star(i)
+            if (br%stable_load(i) .and. br%stable_gap(i) .and. p > 0.05_wp .and. p < 0.9_wp) &
+               dev(k) = max(dev(k), abs(br%gbar(i) - (1 - p + p*log(p)))/problem%law%eps)
+         end do
+         call check(error, dev(k) > 0.0_wp .and. dev(k) < 1.0_wp, "gbar* within eps of Westergaard")
+         if (allocated(error)) return
+         dev(k) = dev(k)*problem%law%eps
+      end do
+      call check(error, dev(2) < 0.5_wp*dev(1), "closer to Westergaard as alpha falls")
+   end subroutine test_westergaard
+
+   !> mu -> infinity at fixed alpha 0.3: the snap load approaches JKR's P_fc* (the maximum
+   !> of sin^2 - alpha sqrt(tan), 0.38773) and P_pf* falls towards JKR's -Infinity (the
+   !> fully adhered branch holds ever more tension), monotonically (mu = 0.5, 1, 3).
+   subroutine test_jkr(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      real(wp) :: jfc, jpf, pf(3), d_fc(3), mus(3)
+      integer :: status, k
+      mus = [0.5_wp, 1.0_wp, 3.0_wp]
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call critical_forces(model_jkr, params, jfc, jpf, status)
+      call check(error, abs(jfc - 0.38773_wp) < 1.0e-5_wp .and. jpf < -huge(1.0_wp), "JKR")
+      if (allocated(error)) return
+      do k = 1, 3
+         call new_params(0.3_wp, mus(k), params, status)
+         call lj_cycle(params, cyc, status, estimate=.false.)
+         call check(error, status == wa_ok, "lj_cycle")
+         if (allocated(error)) return
+         pf(k) = cyc%p_pf
+         d_fc(k) = abs(cyc%p_snap - jfc)
+      end do
+      call check(error, pf(2) < pf(1) .and. pf(3) < pf(2), "P_pf falls with mu")
+      if (allocated(error)) return
+      call check(error, d_fc(2) < d_fc(1) .and. d_fc(3) < d_fc(2) .and. d_fc(3) < 2.0e-3_wp, &
+         "snap towards JKR's P_fc")
+   end subroutine test_jkr
+
+   !> alpha -> 0 at fixed eps = 0.01 Delta: the pull-off approaches the rigid wave's
+   !> (maximum over the crest gap of the mean LJ tension on the undeformed wave, by the
+   !> trapezoidal rule, spectrally accurate for a periodic integrand), which the closed
+   !> form (the parabolic crest, eps -> 0) meets to O(eps).
+   subroutine test_rigid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      real(wp) :: alphas(2), ratio(2), rigid, mu
+      integer :: k, status
+      alphas = [0.003_wp, 0.001_wp]
+      do k = 1, 2
+         mu = (4*alphas(k)**4)**(1.0_wp/3)/0.01_wp
+         call new_params(alphas(k), mu, params, status)
+         call lj_cycle(params, cyc, status, n=512, estimate=.false.)
+         call check(error, status == wa_ok, "lj_cycle")
+         if (allocated(error)) return
+         rigid = rigid_pull_off(lj_law(alphas(k), mu))
+         call check(error, abs(lj_rigid_pull_off(params)/rigid - 1) < 2.0e-3_wp, &
+            "closed form within O(eps) of the rigid wave")
+         if (allocated(error)) return
+         ratio(k) = cyc%p_pf/rigid
+      end do
+      call check(error, ratio(1) < ratio(2) .and. ratio(2) < 1.0_wp .and. ratio(2) > 0.999_wp, &
+         "towards the rigid pull-off")
+   end subroutine test_rigid
+
+   !> -max over delta of mean sigma(delta + 1 - cos 2 pi x) (golden section).
+   function rigid_pull_off(law) result(p)
+      type(bem_law_type), intent(in) :: law
+      real(wp) :: p, lo, hi, m1, m2
+      integer :: it
+      lo = 0.5_wp*law%eps; hi = 3.0_wp*law%eps
+      do it = 1, 100
+         m1 = lo + (hi - lo)*0.381966_wp; m2 = hi - (hi - lo)*0.381966_wp
+         if (mean_tension(law, m1) > mean_tension(law, m2)) then
+            hi = m2
+         else
+            lo = m1
+         end if
+      end do
+      p = -mean_tension(law, 0.5_wp*(lo + hi))
+   end function rigid_pull_off
+
+   function mean_tension(law, delta) result(t)
+      type(bem_law_type), intent(in) :: law
+      real(wp), intent(in) :: delta
+      real(wp) :: t, s(4000), d(4000)
+      integer :: j
+      call law_eval(law, [(delta + 1 - cos(2*pi*j/4000.0_wp), j = 0, 3999)], s, d)
+      t = sum(s)/4000
+   end function mean_tension
+
+   !> The profile of a traced state: mean traction = -P*, mean gap = gbar*.
+   subroutine test_profile(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      real(wp), allocatable :: x(:), gap(:), traction(:)
+      integer :: status, i
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_problem(params, problem, status, n=128)
+      call lj_trace(problem, br, status)
+      allocate (x(128), gap(128), traction(128))
+      do i = 1, br%n, 17
+         call lj_profile(problem, br%z(:, i), x, gap, traction)
+         call check(error, abs(sum(traction)/128 + br%p_star(i)) < 1.0e-9_wp*(1 + abs(br%p_star(i))) &
+            .and. abs(sum(gap)/128 - br%gbar(i)) < 1.0e-12_wp*br%gbar(i), "means")
+         if (allocated(error)) return
+      end do
+   end subroutine test_profile
+
+   !> The sinusoid sampled with a shift (not even about x = 0: solved on the whole period)
+   !> gives the critical loads of the even half-period solution.
+   subroutine test_shifted(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: even, shifted
+      real(wp), allocatable :: samples(:)
+      integer :: status, j
+      character(len=256) :: msg
+      msg = ""
+      samples = [(1 - cos(2*pi*(j/96.0_wp - 0.1_wp)), j = 0, 95)]
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_cycle(params, even, status, msg, n=128, estimate=.false.)
+      call check(error, status == wa_ok, "even: "//trim(msg))
+      if (allocated(error)) return
+      call lj_cycle(params, shifted, status, msg, n=128, profile=samples, estimate=.false.)
+      call check(error, status == wa_ok, "shifted: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, abs(shifted%p_pf - even%p_pf) < 1.0e-9_wp .and. &
+         abs(shifted%p_snap - even%p_snap) < 1.0e-9_wp .and. &
+         abs(shifted%p_fc - even%p_fc) < 1.0e-9_wp, "shift invariance")
+   end subroutine test_shifted
+
+end module test_bem
