@@ -7,7 +7,8 @@ program wavyadhesion_cli
    use, intrinsic :: iso_fortran_env, only: error_unit
    use wavyadhesion, only: params_type, wa_version
    use wa_cli_options, only: cli_options, parse_command_line, si_given
-   use wa_cli_table, only: table_type, open_table, put_text, close_table
+   use wa_cli_table, only: table_type, open_table, set_units, put_text, close_table
+   use wa_cli_units, only: si_scales_type
    use wa_cli_common, only: usage_error, resolve_params
    use wa_cli_help, only: print_help
    use wa_cli_states, only: run_point, run_branch, run_profile
@@ -19,6 +20,7 @@ program wavyadhesion_cli
    type(cli_options) :: opts
    character(len=:), allocatable :: error, control
    type(params_type) :: params
+   type(si_scales_type) :: si
    !> Where the output goes; usage and numerical errors discard it
    type(table_type) :: tab
    logical :: ok, rows_failed, no_directory
@@ -27,14 +29,14 @@ program wavyadhesion_cli
    if (allocated(error)) call usage_error(tab, error)
    if (opts%help .or. opts%version) then
       call open_table(tab, opts%format, "", ok)
-      if (ok .and. opts%help) call print_help(tab)
+      if (ok .and. opts%help) call print_help(tab, opts%help_topic)
       if (ok .and. .not. opts%help) call put_text(tab, "wavyadhesion "//wa_version)
       if (ok) call close_table(tab, ok)
       if (.not. ok) stop 1, quiet=.true.
       stop
    end if
    if ((opts%command /= "critical" .and. opts%command /= "map") .or. si_given(opts)) &
-      call resolve_params(tab, opts, params)
+      call resolve_params(tab, opts, params, si)
    call open_table(tab, opts%format, opts%output, ok, no_directory)
    if (.not. ok .and. no_directory) then            ! a bad --output: a usage error
       write (error_unit, '(a)') "Try 'wavyadhesion --help'."
@@ -42,6 +44,7 @@ program wavyadhesion_cli
    end if
    if (.not. ok) stop 1, quiet=.true.               ! a write error (its reason is printed)
 
+   call set_units(tab, opts%command, si, opts%units == "si")
    control = "load"
    if (allocated(opts%control)) control = opts%control
    rows_failed = .false.

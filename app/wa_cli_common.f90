@@ -9,6 +9,7 @@ module wa_cli_common
       reduced_modulus, status_message, wa_ok
    use wa_cli_options, only: cli_options, given, si_given, option_message
    use wa_cli_table, only: table_type, discard_table
+   use wa_cli_units, only: si_scales_type
    implicit none
    private
 
@@ -38,11 +39,13 @@ contains
    end subroutine numerical_error
 
    !> alpha, mu from --alpha/--mu (defaults 0.3, 1) or from the SI options (the parser
-   !> has checked that the SI set is complete and not mixed with --alpha/--mu).
-   subroutine resolve_params(tab, opts, params)
+   !> has checked that the SI set is complete and not mixed with --alpha/--mu), with
+   !> their SI scales (si%given = .false. without SI input).
+   subroutine resolve_params(tab, opts, params, si)
       type(table_type), intent(inout) :: tab
       type(cli_options), intent(in) :: opts
       type(params_type), intent(out) :: params
+      type(si_scales_type), intent(out) :: si
       type(scales_type) :: scales
       character(len=256) :: msg
       real(wp) :: alpha, mu, estar
@@ -59,6 +62,9 @@ contains
          call dimensional_params(estar, opts%period, opts%amplitude, opts%work, opts%peak, &
             params, scales, status, msg)
          if (status /= wa_ok) call usage_error(tab, option_message(trim(msg)))
+         si = si_scales_type(given=.true., estar=estar, pressure=scales%pressure, &
+            force=scales%force, length=scales%length, delta=opts%amplitude, &
+            energy=scales%pressure*opts%amplitude)
          return
       end if
       alpha = 0.3_wp

@@ -8,7 +8,10 @@ module wa_cli_critical
    use wavyadhesion, only: params_type, new_params, critical_sweep, gap_critical_sweep, &
       mechanism_change, gap_critical_count, gap_critical_names, status_message, wa_ok
    use wa_cli_options, only: cli_options, model_name, si_given, option_message
-   use wa_cli_table, only: table_type, write_header, write_row, format_real
+   use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
+   use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_status, &
+      progress_end
+   use wa_text, only: int_text
    use wa_cli_common, only: usage_error
    implicit none
    private
@@ -28,33 +31,34 @@ contains
       integer, allocatable :: fc_mech(:, :), pf_mech(:, :), row_stat(:)
       character(len=256), allocatable :: row_msg(:)
       character(len=256) :: msg
+      type(progress_type) :: progress
       integer :: i, j, status, n_failed
-      real(wp) :: t0, t1
-      logical :: progress
 
       call critical_grid(tab, opts, si_params, alpha, mu)
       msg = ""
       allocate (p_fc(size(mu), size(alpha)), p_pf(size(mu), size(alpha)), &
          fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)), &
          row_stat(size(mu)), row_msg(size(mu)))
-      call cpu_time(t0)
-      progress = .false.
+      call progress_start(progress, "critical")
       n_failed = 0
       do j = 1, size(alpha)
-         call critical_sweep(opts%model, alpha(j), mu, p_fc(:, j), p_pf(:, j), fc_mech(:, j), &
-            pf_mech(:, j), status, msg, row_stat, row_msg)
+         do i = 1, size(mu)                  ! one mu per call: the rows are independent
+            call progress_step(progress, (j - 1)*size(mu) + i - 1, size(p_fc))
+            call critical_sweep(opts%model, alpha(j), mu(i:i), p_fc(i:i, j), p_pf(i:i, j), &
+               fc_mech(i:i, j), pf_mech(i:i, j), status, msg, row_stat(i:i), row_msg(i:i))
+         end do
+         if (any(row_stat /= wa_ok)) call progress_end(progress)
          call report_failed_rows(alpha(j), mu, row_stat, row_msg, "forces", n_failed)
-         call cpu_time(t1)
-         if (t1 - t0 > 1.0_wp .and. isatty(error_unit)) progress = .true.
-         if (progress) write (error_unit, '(a,i0,a,i0)') "critical: alpha ", j, " of ", size(alpha)
       end do
       rows_failed = n_failed > 0
+      call add_value(tab, "rows_failed", [real(n_failed, wp)], integers=.true.)
       call write_header(tab, "critical forces (full contact, pull-off)", &
          model_name(opts%model), "alpha mu P_fc P_pf", notes=[character(len=400) :: &
          "P_fc: load at which full contact is first reached (loading from P* = 0)", &
          "P_pf: pull-off load on unloading from full contact (-Infinity: never)", &
          failure_note(n_failed, size(p_fc)), &
-         mechanism_notes(tab, opts, alpha, mu, fc_mech, pf_mech)])
+         mechanism_notes(tab, opts, alpha, mu, fc_mech, pf_mech, progress)])
+      call progress_end(progress)
       do j = 1, size(alpha)
          do i = 1, size(mu)
             call write_row(tab, [alpha(j), mu(i), p_fc(i, j), p_pf(i, j)])
@@ -78,19 +82,27 @@ contains
       character(len=256) :: msg
       character(len=24) :: t_fail, t_all
       character(len=400), allocatable :: notes(:)
+      type(progress_type) :: progress
       integer :: i, j, status, n_failed
 
       call critical_grid(tab, opts, si_params, alpha, mu)
       msg = ""
       allocate (values(gap_critical_count, size(mu), size(alpha)), row_stat(size(mu)), &
          row_msg(size(mu)))
+      call progress_start(progress, "critical")
       n_failed = 0
       do j = 1, size(alpha)
-         call gap_critical_sweep(opts%model, alpha(j), mu, values(:, :, j), status, msg, &
-            row_stat, row_msg)
+         do i = 1, size(mu)                  ! one mu per call: the rows are independent
+            call progress_step(progress, (j - 1)*size(mu) + i - 1, size(mu)*size(alpha))
+            call gap_critical_sweep(opts%model, alpha(j), mu(i:i), values(:, i:i, j), status, &
+               msg, row_stat(i:i), row_msg(i:i))
+         end do
+         if (any(row_stat /= wa_ok)) call progress_end(progress)
          call report_failed_rows(alpha(j), mu, row_stat, row_msg, "values", n_failed)
       end do
+      call progress_end(progress)
       rows_failed = n_failed > 0
+      call add_value(tab, "rows_failed", [real(n_failed, wp)], integers=.true.)
       write (t_fail, '(i0)') n_failed
       write (t_all, '(i0)') size(mu)*size(alpha)
       notes = [character(len=400) :: &
@@ -148,14 +160,15 @@ contains
          "and P_pf are NaN (reasons on standard error)"]
    end function failure_note
 
-   !> Header lines locating in mu each change of mechanism (table format only), between
-   !> consecutive rows that succeeded. A change that cannot be located to 1e-10 (the load
-   !> path fails inside the bracket) is given as the interval known to hold it.
-   function mechanism_notes(tab, opts, alpha, mu, fc_mech, pf_mech) result(notes)
+   !> Header lines locating in mu each change of mechanism (table and json formats),
+   !> between consecutive rows that succeeded. A change that cannot be located to 1e-10
+   !> (the load path fails inside the bracket) is given as the interval known to hold it.
+   function mechanism_notes(tab, opts, alpha, mu, fc_mech, pf_mech, progress) result(notes)
       type(table_type), intent(in) :: tab
       type(cli_options), intent(in) :: opts
       real(wp), intent(in) :: alpha(:), mu(:)
       integer, intent(in) :: fc_mech(:, :), pf_mech(:, :)
+      type(progress_type), intent(inout) :: progress
       character(len=400), allocatable :: notes(:)
       character(len=*), parameter :: names(0:3) = [character(len=12) :: "gradual", &
          "jump case 1", "jump case 2", "snap at P=0"]
@@ -174,6 +187,8 @@ contains
                if (which == 1) m = [fc_mech(i, j), fc_mech(k, j)]
                if (which == 2) m = [pf_mech(i, j), pf_mech(k, j)]
                if (m(1) == m(2)) cycle
+               call progress_status(progress, "locating the mechanism changes (alpha "// &
+                  int_text(j)//" of "//int_text(size(alpha))//")")
                msg = ""
                call mechanism_change(opts%model, alpha(j), which, mu(i), mu(k), mu_c, status, &
                   msg, bracket)
@@ -183,6 +198,7 @@ contains
                   where = " mu "//format_real(mu_c)
                else
                   where = " mu in ["//format_real(bracket(1))//", "//format_real(bracket(2))//"]"
+                  call progress_end(progress)
                   write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
                      format_real(alpha(j))//":"//where//change//": "//trim(msg)
                   change = change//" (not located further: the load path fails there)"

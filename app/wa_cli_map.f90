@@ -10,6 +10,7 @@ module wa_cli_map
    use wa_cli_options, only: cli_options, model_name
    use wa_cli_table, only: table_type, write_header, write_row, format_real
    use wa_cli_common, only: usage_error, numerical_error
+   use wa_cli_progress, only: progress_type, progress_start, progress_note, progress_end
    implicit none
    private
 
@@ -26,6 +27,7 @@ contains
       character(len=400), allocatable :: notes(:)
       character(len=*), parameter :: ends(0:3) = [character(len=24) :: "grid edge", &
          "inside (meets/turns)", "leaves the mu range", "load path fails"]
+      type(progress_type) :: progress
       integer :: status, c, i, k, control
       logical :: seen
 
@@ -43,8 +45,13 @@ contains
          "mechanism each)")
       if (size(mu) < 2) call usage_error(tab, "map: --mu-range needs N >= 2")
       msg = ""
+      ! One library call that cannot report its progress: say so, and erase it after.
+      call progress_start(progress, "map")
+      call progress_note(progress, "computing the boundaries over "//int_text(size(alpha))// &
+         " alpha (one library call; no progress until it returns)...")
       call adhesion_map(opts%model, alpha, mu(1), mu(size(mu)), max(size(mu), 60), map, &
          status, msg, control=control)
+      call progress_end(progress)
       if (status == wa_invalid_argument) call usage_error(tab, "map: "//trim(msg))
       if (status /= wa_ok) call numerical_error(tab, status, msg)
       allocate (notes(0))

@@ -7,7 +7,8 @@ module wa_cli_paths
    use wavyadhesion, only: params_type, path_type, branch_type, gap_path_type, trace_branch, &
       path_from_branch, load_jump_energies, gap_path, gap_law, event_jump_start, wa_ok
    use wa_cli_options, only: cli_options, model_name
-   use wa_cli_table, only: table_type, write_header, write_row, format_real
+   use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
+   use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_end
    use wa_cli_common, only: numerical_error, event_legend
    implicit none
    private
@@ -26,6 +27,7 @@ contains
       character(len=256) :: msg
       character(len=160), allocatable :: notes(:)
       real(wp) :: energy(64)
+      integer, allocatable :: jumps(:)
       integer :: i, status
 
       msg = ""
@@ -51,6 +53,12 @@ contains
       end do
       notes = [character(len=160) :: notes, "P-a loop area (the paper's measure, not an "// &
          "energy) = "//format_real(path%loop_area)]
+      jumps = pack([(i, i = 1, path%n)], path%event(1:path%n) == event_jump_start)
+      call add_value(tab, "P_fc", [path%p_fc])
+      call add_value(tab, "P_pf", [path%p_pf])
+      call add_value(tab, "jump_rows", real(jumps, wp), list=.true., integers=.true.)
+      call add_value(tab, "jump_energies", energy(jumps), list=.true.)
+      call add_value(tab, "loop_area", [path%loop_area])
       call write_header(tab, "load-controlled loading and unloading", model_name(opts%model), &
          "stage event a_star c_star P_star", params, notes)
       do i = 1, path%n
@@ -71,6 +79,8 @@ contains
       msg = ""
       call gap_path(opts%model, params, path, status, msg)
       if (status /= wa_ok) call numerical_error(tab, status, msg)
+      call add_value(tab, "W_star", [path%w_star])
+      call add_value(tab, "W_fraction", [path%w_fraction])
       call write_header(tab, "gap-controlled approach and retraction", &
          model_name(opts%model), "stage event a_star c_star P_star gbar", params, &
          [character(len=80) :: "stage: 1 approach (gbar* falling), 2 retraction (rising)", &
@@ -86,20 +96,31 @@ contains
       end do
    end subroutine run_gap_path
 
-   !> gaplaw: P* on approach and retraction and their slopes on a uniform gbar* grid.
+   !> gaplaw: P* on approach and retraction and their slopes on a uniform gbar* grid,
+   !> in calls of `chunk` mean gaps (the values equal those of one call) so that a long
+   !> run can show its progress.
    subroutine run_gaplaw(opts, params, tab)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
       type(table_type), intent(inout) :: tab
+      integer, parameter :: chunk = 65536
       real(wp), allocatable :: pa(:), pr(:), da(:), dr(:)
       character(len=256) :: msg
-      integer :: i, n, status
+      type(progress_type) :: progress
+      integer :: i, n, k, status
 
       n = size(opts%gbar)
       allocate (pa(n), pr(n), da(n), dr(n))
       msg = ""
-      call gap_law(opts%model, params, opts%gbar, pa, pr, da, dr, status, msg)
-      if (status /= wa_ok) call numerical_error(tab, status, msg)
+      call progress_start(progress, "gaplaw")
+      do i = 1, n, chunk
+         k = min(n, i + chunk - 1)
+         call progress_step(progress, i - 1, n)
+         call gap_law(opts%model, params, opts%gbar(i:k), pa(i:k), pr(i:k), da(i:k), &
+            dr(i:k), status, msg)
+         if (status /= wa_ok) call numerical_error(tab, status, msg)
+      end do
+      call progress_end(progress)
       call write_header(tab, "gap law: P* against the mean gap gbar* (gap control)", &
          model_name(opts%model), "gbar P_approach P_retract dPdg_approach dPdg_retract", &
          params, [character(len=80) :: &

@@ -5,7 +5,8 @@ module wa_cli_states
    use wavyadhesion, only: params_type, state_type, branch_type, model_roots, trace_branch, &
       model_profile, wa_ok, wa_capacity_too_small, wa_invalid_argument
    use wa_cli_options, only: cli_options, model_name, option_message
-   use wa_cli_table, only: table_type, write_header, write_row, format_real
+   use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
+   use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_end
    use wa_cli_common, only: usage_error, numerical_error, single, gbar_or_nan, event_legend
    implicit none
    private
@@ -21,6 +22,7 @@ contains
       type(params_type), intent(in) :: params
       type(table_type), intent(inout) :: tab
       type(state_type), allocatable :: rows(:), grown(:), states(:)
+      type(progress_type) :: progress
       integer :: i, n_rows, n
 
       if (.not. allocated(opts%a_star)) call usage_error(tab, "point needs --a-star X[,X...]")
@@ -31,7 +33,9 @@ contains
       end do
       allocate (rows(max(16, 2*size(opts%a_star))))
       n_rows = 0
+      call progress_start(progress, "point")
       do i = 1, size(opts%a_star)
+         call progress_step(progress, i - 1, size(opts%a_star))
          call states_at(tab, opts%model, params, opts%a_star(i), states)
          n = size(states)
          if (n_rows + n > size(rows)) then
@@ -42,6 +46,7 @@ contains
          rows(n_rows + 1:n_rows + n) = states
          n_rows = n_rows + n
       end do
+      call progress_end(progress)
       call write_header(tab, "equilibria at given a*", model_name(opts%model), &
          "a_star c_star P_star zone_case gbar", params, &
          [character(len=70) :: "zone_case: 1 a*<c*<1/2, 2 c*=1/2, 3 full contact", &
@@ -144,6 +149,11 @@ contains
          zone_text(state%zone_case)
       notes(4) = "gbar = "//format_real(gbar_or_nan(state%gbar))//" (mean gap over Delta)"
       notes(5) = "traction: p/p* (positive = compressive); gap: h/Delta (0 on the contact)"
+      call add_value(tab, "a_star", [state%a_star])
+      call add_value(tab, "c_star", [state%c_star])
+      call add_value(tab, "P_star", [state%p_star])
+      call add_value(tab, "zone_case", [real(state%zone_case, wp)], integers=.true.)
+      call add_value(tab, "gbar", [gbar_or_nan(state%gbar)])
       call write_header(tab, "traction and gap profiles of one state", &
          model_name(opts%model), "x_star traction gap", params, notes)
       do i = 1, n
