@@ -9,7 +9,7 @@ module wa_cli_options
    private
 
    public :: cli_options, parse_command_line, parse_real_list, model_name, given, si_given, &
-      option_message
+      option_message, is_subcommand
 
    integer, parameter :: max_values = 100000
    !> The SI options: moduli (1-4), Estar (5), geometry and adhesion (6-9).
@@ -29,7 +29,12 @@ module wa_cli_options
       character(len=:), allocatable :: format, output
       !> path: "load" (default) or "gap" (mean-gap control)
       character(len=:), allocatable :: control
+      !> --units: "reduced" (default) or "si" (SI columns added; needs SI input)
+      character(len=:), allocatable :: units
       logical :: help = .false., version = .false.
+      !> The subcommand whose help is asked for ("" = the global help): `help SUB`,
+      !> `SUB --help`
+      character(len=:), allocatable :: help_topic
       !> SI inputs (NaN when not given)
       real(wp) :: e1, nu1, e2, nu2, estar, period, amplitude, work, peak
       !> The options given, as "|--alpha|--mu|" (each option may be given once)
@@ -50,18 +55,21 @@ contains
       i = 1
       if (n >= 1) then
          arg = argument(1)
+         if (arg == "help") then
+            call parse_help(opts, n, error)
+            return
+         end if
          if (arg(1:1) /= "-") then
             opts%command = arg
+            opts%help_topic = arg
             i = 2
          end if
       end if
-      select case (opts%command)
-      case ("point", "branch", "path", "critical", "map", "profile", "gaplaw")
-      case default
+      if (.not. is_subcommand(opts%command)) then
          error = "unknown subcommand '"//opts%command//"' (expected point, branch, path, "// &
             "critical, map, profile or gaplaw)"
          return
-      end select
+      end if
       do while (i <= n)
          arg = argument(i)
          select case (arg)
@@ -82,8 +90,42 @@ contains
          opts%given = opts%given//arg//"|"
          i = i + 2
       end do
-      call check_combination(opts, error)
+      if (.not. opts%help) call check_combination(opts, error)   ! `gaplaw --help` is help
    end subroutine parse_command_line
+
+   !> `wavyadhesion help [SUBCOMMAND]`: the global help or the subcommand's.
+   subroutine parse_help(opts, n, error)
+      type(cli_options), intent(inout) :: opts
+      integer, intent(in) :: n
+      character(len=:), allocatable, intent(out) :: error
+      opts%help = .true.
+      if (n == 1) return
+      opts%help_topic = argument(2)
+      if (n > 2) then
+         error = "help takes one subcommand (help SUBCOMMAND)"
+      else if (.not. is_subcommand(opts%help_topic)) then
+         error = "help: unknown subcommand '"//opts%help_topic//"' (expected point, "// &
+            "branch, path, critical, map, profile or gaplaw)"
+      end if
+   end subroutine parse_help
+
+   pure logical function is_subcommand(name)
+      character(len=*), intent(in) :: name
+      select case (name)
+      case ("point", "branch", "path", "critical", "map", "profile", "gaplaw")
+         is_subcommand = .true.
+      case default
+         is_subcommand = .false.
+      end select
+   end function is_subcommand
+
+   !> True when --control was given with value `value`.
+   pure logical function control_is(opts, value)
+      type(cli_options), intent(in) :: opts
+      character(len=*), intent(in) :: value
+      control_is = .false.
+      if (allocated(opts%control)) control_is = opts%control == value
+   end function control_is
 
    !> True when option `name` (e.g. "--alpha") was given.
    pure logical function given(opts, name)
@@ -133,8 +175,11 @@ contains
       else if (given(opts, "--control") .and. opts%command /= "path" .and. &
          opts%command /= "critical" .and. opts%command /= "map") then
          error = "--control is only for the path, critical and map subcommands"
-      else if (given(opts, "--control") .and. opts%command /= "map") then
-         if (opts%control == "both") error = "--control both is only for the map subcommand"
+      else if (opts%command /= "map" .and. control_is(opts, "both")) then
+         error = "--control both is only for the map subcommand"
+      else if (opts%units == "si" .and. .not. si_given(opts)) then
+         error = "--units si needs SI input (--Estar or --E1 --nu1 --E2 --nu2, and "// &
+            "--period --amplitude --work-of-adhesion --peak-stress); map has none"
       end if
       if (allocated(error) .or. .not. si_given(opts)) return
       if (given(opts, "--alpha") .or. given(opts, "--mu") .or. given(opts, "--mu-range")) then
@@ -204,10 +249,16 @@ contains
             opts%control = val
          end if
       case ("--format")
-         if (val /= "table" .and. val /= "csv") then
-            error = "--format: '"//val//"' is not one of table, csv"
+         if (val /= "table" .and. val /= "csv" .and. val /= "json") then
+            error = "--format: '"//val//"' is not one of table, csv, json"
          else
             opts%format = val
+         end if
+      case ("--units")
+         if (val /= "reduced" .and. val /= "si") then
+            error = "--units: '"//val//"' is not one of reduced, si"
+         else
+            opts%units = val
          end if
       case ("--output")
          if (len(val) == 0) then
@@ -498,6 +549,8 @@ contains
       real(wp) :: nan
       nan = ieee_value(nan, ieee_quiet_nan)
       opts%command = "branch"
+      opts%help_topic = ""
+      opts%units = "reduced"
       opts%format = "table"
       opts%output = ""
       opts%given = "|"

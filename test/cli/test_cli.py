@@ -4,6 +4,7 @@ The executable is $WAVYADHESION_CLI, or the one fpm builds in the release profil
 """
 import csv
 import io
+import json
 import math
 import os
 import signal
@@ -711,3 +712,276 @@ def test_critical_control_gap_bad_input(cli):
     assert res.returncode == 2 and "alpha" in res.stderr
     res = run(cli, "critical", "--control", "shear", check=False)
     assert res.returncode == 2 and "--control" in res.stderr
+
+
+# --- portability: help per subcommand, json, table names line, SI units, progress -------
+
+SUBCOMMANDS = ["branch", "point", "profile", "path", "gaplaw", "critical", "map"]
+
+
+@pytest.mark.parametrize("sub", SUBCOMMANDS)
+def test_subcommand_help(cli, sub):
+    # `SUB --help` printed the global help; now it and `help SUB` print SUB's own
+    a = run(cli, sub, "--help").stdout
+    assert a == run(cli, "help", sub).stdout
+    assert a.startswith(f"Usage: wavyadhesion {sub}")
+    assert "Columns" in a and "Example" in a
+    assert a != run(cli, "--help").stdout
+
+
+def test_help_without_subcommand_is_global(cli):
+    text = run(cli, "--help").stdout
+    assert run(cli, "help").stdout == text
+    assert "Subcommands:" in text and "help [SUBCOMMAND]" in text and "json" in text
+    for args in (["help", "bogus"], ["help", "point", "branch"]):
+        res = run(cli, *args, check=False)
+        assert res.returncode == 2 and res.stdout == "" and "help" in res.stderr
+
+
+def strict_json(text):
+    """json.loads refusing NaN/Infinity literals (they are not JSON)."""
+    def refuse(name):
+        raise ValueError(f"non-standard JSON constant {name}")
+    return json.loads(text, parse_constant=refuse)
+
+
+def table_values(text):
+    """The numeric rows of the table format (what list-directed READ sees)."""
+    return [[float(v) for v in l.split()] for l in text.splitlines()
+            if l.strip() and not l.startswith("#")]
+
+
+@pytest.mark.parametrize("args", [
+    ["point", "--model", "md", "--a-star", "0.1,0.2,0.3"],
+    ["branch", "--model", "dw", "--alpha", "0.3", "--mu", "5"],
+    ["profile", "--model", "md", "--a-star", "0.2", "--n", "11"],
+    ["path", "--alpha", "0.3", "--mu", "5"],
+    ["path", "--control", "gap", "--model", "md"],
+    ["gaplaw", "--model", "md", "--gbar-range", "0:1.5:31"],
+    ["critical", "--model", "jkr", "--alpha", "0.3,1", "--mu", "0,1"],
+    ["critical", "--control", "gap", "--model", "md", "--mu", "1,5"],
+    ["map", "--model", "dw", "--alpha", "0.3,0.31"],
+])
+def test_json_is_strict_and_holds_the_table(cli, args):
+    doc = strict_json(run(cli, *args, "--format", "json").stdout)
+    table = run(cli, *args).stdout
+    assert doc["program"] == "wavyadhesion" and doc["subcommand"] == args[0]
+    assert doc["version"] == run(cli, "--version").stdout.split()[1]
+    assert f"# model: {doc['model']}" in table
+    assert doc["columns"] == table.splitlines()[0][2:].split()
+    assert doc["n_rows"] == len(table_values(table))
+    # every value equals the table's (non-finite ones are the strings float() reads)
+    for k, name in enumerate(doc["columns"]):
+        got = [float(v) for v in doc["data"][name]]
+        want = [row[k] for row in table_values(table)]
+        assert len(got) == len(want)
+        for g, w in zip(got, want):
+            assert (math.isnan(g) and math.isnan(w)) or g == w
+    # the header notes are in the document (mechanism changes included)
+    notes = [l[2:] for l in table.splitlines()[1:] if l.startswith("# ") and
+             not l.startswith(("# columns:", "# wavyadhesion", "# model:", "# alpha =",
+                               "# Sigma0 ="))]
+    assert [n.rstrip() for n in notes] == [n.rstrip() for n in doc["notes"]]
+    if args[0] not in ("critical", "map"):
+        p = doc["parameters"]
+        assert f"# alpha = {p['alpha']:.16E}"[:12] in table.replace("E+0", "E+").replace("E-0", "E-") \
+            or float(table.split("# alpha = ")[1].split()[0]) == p["alpha"]
+        assert set(p) == {"alpha", "mu", "Sigma0", "Dcod"}
+
+
+def test_json_metadata_values(cli):
+    path = strict_json(run(cli, "path", "--alpha", "0.3", "--mu", "5", "--format", "json").stdout)
+    v = path["values"]
+    assert v["jump_rows"] == [1, 3, 6]
+    assert v["jump_energies"][0] == "NaN" and v["jump_energies"][2] == "NaN"
+    assert v["jump_energies"][1] == pytest.approx(9.1834906501750517e-3, rel=1e-9)
+    assert v["P_fc"] == max(path["data"]["P_star"])
+    gap = strict_json(run(cli, "path", "--control", "gap", "--model", "md", "--format",
+                          "json").stdout)
+    text = run(cli, "path", "--control", "gap", "--model", "md").stdout
+    w = float([l for l in text.splitlines() if l.startswith("# W* = ")][0].split()[3])
+    assert gap["values"]["W_star"] == w
+    jkr = strict_json(run(cli, "critical", "--model", "jkr", "--format", "json").stdout)
+    assert jkr["data"]["P_pf"] == ["-Infinity"] and jkr["values"]["rows_failed"] == 0
+    assert "Infinity" in jkr["nonfinite"]
+    assert float(jkr["data"]["P_pf"][0]) == -math.inf
+    crit = strict_json(run(cli, "critical", "--model", "dw", "--alpha", "0.3", "--mu-range",
+                           "1:10:5:log", "--format", "json").stdout)
+    assert any("P_fc: gradual -> jump case 1" in n for n in crit["notes"])
+
+
+def test_json_output_file_and_failure(cli, tmp_path):
+    out = tmp_path / "t.json"
+    run(cli, "point", "--a-star", "0.2", "--format", "json", "--output", str(out))
+    assert strict_json(out.read_text())["data"]["a_star"] == [0.2]
+    res = run(cli, "point", "--a-star", "0.7", "--format", "json", check=False)
+    assert res.returncode == 2 and res.stdout == ""
+
+
+@pytest.mark.parametrize("args", [
+    ["point", "--model", "md", "--a-star", "0.1,0.2,0.3"],
+    ["branch", "--model", "md"],
+    ["critical", "--model", "jkr", "--mu", "0,1"],
+    ["path", "--control", "gap"],
+])
+def test_table_first_line_names_the_columns_for_numpy(cli, tmp_path, args):
+    np = pytest.importorskip("numpy")
+    out = tmp_path / "t.txt"
+    run(cli, *args, "--output", str(out))
+    csv_table = rows(run(cli, *args, "--format", "csv").stdout)
+    data = np.genfromtxt(out, names=True)           # the documented call, no other option
+    data = np.atleast_1d(data)
+    assert list(data.dtype.names) == list(csv_table[0].keys())
+    for name in data.dtype.names:
+        want = [float(r[name]) for r in csv_table]
+        assert data[name].tolist() == pytest.approx(want, rel=0, abs=0, nan_ok=True)
+
+
+def test_table_reads_with_pandas(cli, tmp_path):
+    pd = pytest.importorskip("pandas")
+    out = tmp_path / "t.txt"
+    run(cli, "branch", "--model", "md", "--output", str(out))
+    # the call documented in doc/user-guide.md
+    names = open(out).readline().lstrip("#").split()
+    frame = pd.read_csv(out, sep=r"\s+", comment="#", header=None, names=names)
+    csv_table = rows(run(cli, "branch", "--model", "md", "--format", "csv").stdout)
+    assert list(frame.columns) == list(csv_table[0].keys()) and len(frame) == len(csv_table)
+    assert frame["P_star"].tolist() == [float(r["P_star"]) for r in csv_table]
+
+
+def test_table_reads_with_fortran_list_directed_read(cli, tmp_path):
+    # a legacy reader: skip lines starting with '#', read the rest with READ(line, *)
+    import shutil
+    fc = shutil.which("gfortran")
+    if not fc:
+        pytest.skip("no gfortran")
+    src = tmp_path / "reader.f90"
+    src.write_text("""program reader
+   implicit none
+   character(len=1000) :: line
+   double precision :: v(8), total
+   integer :: ios, n
+   n = 0
+   total = 0
+   do
+      read (*, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      if (line(1:1) == '#') cycle
+      read (line, *) v
+      n = n + 1
+      total = total + v(3)
+   end do
+   print '(i0, 1x, es24.16)', n, total
+end program reader
+""")
+    subprocess.run([fc, str(src), "-o", str(tmp_path / "reader")], check=True)
+    table = run(cli, "branch", "--model", "dw").stdout
+    res = subprocess.run([str(tmp_path / "reader")], input=table, capture_output=True,
+                         text=True, check=True)
+    n, total = res.stdout.split()
+    data = table_values(table)
+    assert int(n) == len(data)
+    assert float(total) == pytest.approx(sum(r[2] for r in data), rel=1e-14)
+
+
+SI_INPUT = ["--Estar", "1e9", "--period", "1e-5", "--amplitude", "1e-7",
+            "--work-of-adhesion", "0.05", "--peak-stress", "1e7"]
+
+
+def test_si_header_gives_the_scales(cli):
+    # hand computation: p* = pi E* Delta / L = pi 1e9 1e-7 / 1e-5 = pi 1e7 Pa
+    pstar = math.pi * 1e9 * 1e-7 / 1e-5
+    head = run(cli, "branch", *SI_INPUT).stdout
+    line = [l for l in head.splitlines() if l.startswith("# SI scales: E*")][0]
+    assert float(line.split("p* = pi E* Delta/L = ")[1].split()[0]) == pytest.approx(pstar, rel=1e-15)
+    assert float(line.split("p* L = ")[1].split()[0]) == pytest.approx(pstar * 1e-5, rel=1e-15)
+    line = [l for l in head.splitlines() if l.startswith("# SI scales: L")][0]
+    assert float(line.split("L = ")[1].split()[0]) == 1e-5
+    assert float(line.split("Delta = ")[1].split()[0]) == 1e-7
+    assert float(line.split("p* Delta = ")[1].split()[0]) == pytest.approx(pstar * 1e-7, rel=1e-15)
+    doc = strict_json(run(cli, "branch", *SI_INPUT, "--format", "json").stdout)
+    assert doc["scales"]["p_star_Pa"] == pytest.approx(pstar, rel=1e-15)
+    assert "# SI scales" not in run(cli, "branch").stdout
+
+
+def test_units_si_columns_match_a_hand_computation(cli):
+    pstar, length, delta = math.pi * 1e7, 1e-5, 1e-7
+    table = rows(run(cli, "point", *SI_INPUT, "--a-star", "0.1,0.2", "--units", "si",
+                     "--format", "csv").stdout)
+    assert list(table[0].keys()) == ["a_star", "c_star", "P_star", "zone_case", "gbar",
+                                     "a_m", "c_m", "P_Pa", "gbar_m"]
+    for r in table:
+        assert float(r["a_m"]) == pytest.approx(float(r["a_star"]) * length, rel=1e-15)
+        assert float(r["c_m"]) == pytest.approx(float(r["c_star"]) * length, rel=1e-15)
+        assert float(r["P_Pa"]) == pytest.approx(float(r["P_star"]) * pstar, rel=1e-15)
+        assert float(r["gbar_m"]) == pytest.approx(float(r["gbar"]) * delta, rel=1e-15)
+    law = rows(run(cli, "gaplaw", *SI_INPUT, "--gbar-range", "0.5:1:3", "--units", "si",
+                   "--format", "csv").stdout)
+    for r in law:
+        assert float(r["dPdg_approach_Pa_per_m"]) == pytest.approx(
+            float(r["dPdg_approach"]) * pstar / delta, rel=1e-15)
+    gap = run(cli, "path", "--control", "gap", "--model", "md", *SI_INPUT, "--units", "si").stdout
+    w_star = float([l for l in gap.splitlines() if l.startswith("# W* = ")][0].split()[3])
+    w_si = [l for l in gap.splitlines() if l.startswith("# SI: W_J_per_m2 = ")][0]
+    assert float(w_si.split()[4]) == pytest.approx(w_star * pstar * delta, rel=1e-15)
+    assert w_si.endswith(" J/m^2")
+    doc = strict_json(run(cli, "profile", *SI_INPUT, "--a-star", "0.2", "--n", "5", "--units",
+                          "si", "--format", "json").stdout)
+    assert doc["units"] == {"x_m": "m", "traction_Pa": "Pa", "gap_m": "m"}
+    assert doc["data"]["x_m"][0] == pytest.approx(-0.5 * length, rel=1e-15)
+
+
+def test_units_si_needs_si_input(cli):
+    res = run(cli, "point", "--a-star", "0.2", "--units", "si", check=False)
+    assert res.returncode == 2 and "--units si needs SI input" in res.stderr
+    res = run(cli, "point", "--a-star", "0.2", "--units", "metric", check=False)
+    assert res.returncode == 2 and "--units" in res.stderr
+
+
+def run_on_terminal(cli, *args):
+    """Run with standard error on a pseudo-terminal; returns (stdout, stderr text)."""
+    import pty
+    import tempfile
+    master, slave = pty.openpty()
+    out_file = tempfile.TemporaryFile()           # not a pipe: the table may be large
+    proc = subprocess.Popen([cli, *args], stdout=out_file, stderr=slave)
+    os.close(slave)
+    err = b""
+    while True:
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:                       # EIO: the child closed the terminal
+            break
+        if not chunk:
+            break
+        err += chunk
+    proc.wait(timeout=300)
+    os.close(master)
+    out_file.seek(0)
+    out = out_file.read()
+    out_file.close()
+    assert proc.returncode == 0, err
+    return out.decode(), err.decode()
+
+
+def test_progress_on_a_terminal_by_point(cli):
+    # MD critical over 2000 mu takes a few seconds: a single line rewritten with \r,
+    # counting points, erased at the end; the table itself is unchanged
+    args = ["critical", "--model", "md", "--mu-range", "0.001:1000:2000:log"]
+    out, err = run_on_terminal(cli, *args)
+    assert "critical: " in err and " of 2000 points" in err
+    assert "\n" not in err.replace("\r\n", "")      # never a new line of its own
+    assert err.rstrip(" ").endswith("\r")            # erased: blanks, back to column 0
+    assert out == run(cli, *args).stdout
+
+
+def test_no_progress_when_stderr_is_not_a_terminal(cli):
+    res = run(cli, "critical", "--model", "md", "--mu-range", "0.001:1000:2000:log")
+    assert res.stderr == ""
+
+
+def test_map_says_it_is_computing_on_a_terminal(cli):
+    out, err = run_on_terminal(cli, "map", "--model", "dw", "--alpha", "0.3,0.31")
+    assert "map: computing the boundaries over 2 alpha" in err
+    assert err.rstrip(" ").endswith("\r")
+    assert out.splitlines()[0] == "# boundary alpha mu"
