@@ -35,7 +35,7 @@ module wa_cli_output
    !> The temporary file to unlink if SIGINT/SIGTERM/SIGHUP ends the program (NUL-
    !> terminated; empty when none). The one piece of program-wide state of the driver: a
    !> signal handler can reach nothing else. Not part of the library.
-   character(kind=c_char, len=path_max), save :: pending_temp = c_null_char
+   character(kind=c_char, len=path_max), save, volatile :: pending_temp = c_null_char
 
    interface
       function c_fopen(path, mode) result(file) bind(C, name="fopen")
@@ -160,20 +160,24 @@ contains
       else
          sink%final = path
       end if
+      ! The handlers are in place, and the name published, before the file exists: a
+      ! signal at any moment removes whatever temporary file there is (no window).
+      call catch_signals()
       write (pid, '(i0)') c_getpid()
       do k = 0, 9                                        ! "x": never reuse an existing name
          write (attempt, '(i0)') k
          sink%temp = directory(sink%final)//"."//base_name(sink%final)//".tmp-"// &
             trim(pid)//"-"//trim(attempt)
+         call publish_temp(sink%temp)
          sink%file = c_fopen(sink%temp//c_null_char, "wx"//c_null_char)
          if (c_associated(sink%file)) exit
+         pending_temp(1:1) = c_null_char                 ! not ours: never remove it
       end do
       ok = c_associated(sink%file)
       if (.not. ok .and. present(no_directory)) then
          call stat(directory(sink%final)//".", values, status)
          no_directory = status /= 0
       end if
-      if (ok) call remove_on_signal(sink%temp)
       if (ok .and. status == 0) &                        ! keep FILE's permission bits
          status = c_chmod(sink%temp//c_null_char, int(iand(values(3), int(o'7777')), c_int))
       if (.not. ok) call c_perror("wavyadhesion: --output: cannot create a file in the "// &
@@ -233,17 +237,24 @@ contains
       if (len(sink%temp) > 0) status = c_remove(sink%temp//c_null_char)
    end subroutine discard_sink
 
-   !> Remember `temp` and catch SIGINT, SIGTERM and SIGHUP: a run stopped by Ctrl-C or
-   !> kill removes its temporary file (the target stays as it was).
-   subroutine remove_on_signal(temp)
-      character(len=*), intent(in) :: temp
+   !> Catch SIGINT, SIGTERM and SIGHUP: a run stopped by Ctrl-C or kill removes its
+   !> temporary file (the target stays as it was) and exits with 128 + signal.
+   subroutine catch_signals()
       type(c_funptr) :: previous
-      if (len(temp) >= path_max) return
-      pending_temp = temp//c_null_char
       previous = c_signal(sigint, c_funloc(on_signal))
       previous = c_signal(sigterm, c_funloc(on_signal))
       previous = c_signal(sighup, c_funloc(on_signal))
-   end subroutine remove_on_signal
+   end subroutine catch_signals
+
+   !> Make `temp` the file the signal handler removes. Its first byte is stored last, so
+   !> the handler sees either no name or the whole name, never part of one.
+   subroutine publish_temp(temp)
+      character(len=*), intent(in) :: temp
+      pending_temp(1:1) = c_null_char
+      if (len(temp) < 1 .or. len(temp) >= path_max) return
+      pending_temp(2:) = temp(2:)//c_null_char
+      pending_temp(1:1) = temp(1:1)
+   end subroutine publish_temp
 
    !> Signal handler: unlink the temporary file and exit with 128 + signal (only
    !> async-signal-safe calls: unlink, _exit).
