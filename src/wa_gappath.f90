@@ -467,7 +467,7 @@ contains
    !> jump-out maximum lies there, and the walk went on to a* -> 0 past it (contact
    !> lost after the most tensile state, g_P_min > g_interaction_lost). gbar* is sampled
    !> at a* = a_start 10^(-k/2) down to where it is flat to round-off (or to 1e-9 of
-   !> a_start), and where it turns (by more than its round-off on both sides) the turn
+   !> a_start), and where it turns (by more than 1e-13 of gbar* on both sides) the turn
    !> and its neighbouring samples join the chain, for locate_extrema to refine. Where
    !> no turn is found the chain stays as traced.
    subroutine sample_floor_intervals(model, params, ch, status, errmsg)
@@ -493,7 +493,9 @@ contains
          end if
          lo_end = merge(i, i + 1, ch%a(i) < ch%a(i + 1))
          hi_end = 2*i + 1 - lo_end
-         noise = 16.0_wp*epsilon(1.0_wp)*max(abs(ch%g(i)), abs(ch%g(i + 1)))
+         ! the round-off of gbar* of the point solves (MD's mean gap by quadrature: ~1e-14,
+         ! and its turns at that level flickered the gap map's mechanisms at alpha = 3)
+         noise = 1.0e-13_wp*max(abs(ch%g(i)), abs(ch%g(i + 1)))
          st(0) = chain_state(ch, hi_end)         ! samples by falling a*
          n = 0
          do k = 1, n_max
