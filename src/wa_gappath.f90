@@ -69,6 +69,15 @@ module wa_gappath
       logical, allocatable :: extremum(:), stable_after(:)
       !> true when the chain's first point is the end of the P* = 0 states (MD)
       logical :: joined = .false.
+      !> Traced points that the refinement of a gbar* extremum replaced (locate_extrema):
+      !> their chain positions s (in the refined chain), P*, gbar* and a*. Such a point
+      !> can be a fold of P* one node from the extremum (small alpha): the retraction
+      !> passes it, so its P* counts for P_min (gap_cycle_critical).
+      integer :: n_moved = 0
+      real(wp), allocatable :: moved_s(:), moved_p(:), moved_g(:), moved_a(:)
+      !> interval i reaches below the tracer's first point a* = a_start with no traced
+      !> point inside (below_tracer)
+      logical, allocatable :: untraced(:)
    end type chain_type
 
    !> The last case-1 solutions along a run of nodes (a panel's, in order): they predict
@@ -343,6 +352,16 @@ contains
       end if
       ch%extremum = .false.
       ch%stable_after = .false.
+      ! the a_limit extension of a contact curve, or the joint between the closure of MD's
+      ! no-contact states (a* = 0) and the contact curve
+      allocate (ch%untraced(ch%n))
+      ch%untraced = .false.
+      do i = 1, ch%n - 1
+         ch%untraced(i) = (i == 1 .and. .not. ch%joined) .or. (ch%zone(i) == zone_no_contact &
+            .and. ch%a(i) == 0.0_wp .and. ch%zone(i + 1) == zone_inside) .or. &
+            (ch%zone(i + 1) == zone_no_contact .and. ch%a(i + 1) == 0.0_wp .and. &
+            ch%zone(i) == zone_inside)
+      end do
    contains
       subroutine push(ch, a, c, p, g, zone, event)
          type(chain_type), intent(inout) :: ch
@@ -417,30 +436,108 @@ contains
             end if
          end do
          do k = n_turn, 1, -1                    ! insert after i, last first
-            call insert_after(i, st(turn(k)), ys(turn(k)))
+            call chain_insert(ch, i, st(turn(k)), ys(turn(k)))
          end do
          i = i + n_turn + 1
       end do
-   contains
-      subroutine insert_after(at, sx, yx)
-         integer, intent(in) :: at
-         type(state_type), intent(in) :: sx
-         real(wp), intent(in) :: yx
-         ch%a = [ch%a(:at), sx%a_star, ch%a(at + 1:)]
-         ch%c = [ch%c(:at), sx%c_star, ch%c(at + 1:)]
-         ch%p = [ch%p(:at), sx%p_star, ch%p(at + 1:)]
-         ch%g = [ch%g(:at), sx%gbar, ch%g(at + 1:)]
-         ch%y = [ch%y(:at), yx, ch%y(at + 1:)]
-         ch%zone = [ch%zone(:at), zone_inside, ch%zone(at + 1:)]
-         ch%event = [ch%event(:at), event_none, ch%event(at + 1:)]
-         ch%extremum = [ch%extremum(:at), .false., ch%extremum(at + 1:)]
-         ch%stable_after = [ch%stable_after(:at), .false., ch%stable_after(at + 1:)]
-         ch%n = ch%n + 1
-      end subroutine insert_after
    end subroutine sample_switch_intervals
+
+   !> Insert the case-1 state sx (curve variable yx) into the chain after point at.
+   pure subroutine chain_insert(ch, at, sx, yx)
+      type(chain_type), intent(inout) :: ch
+      integer, intent(in) :: at
+      type(state_type), intent(in) :: sx
+      real(wp), intent(in) :: yx
+      ch%a = [ch%a(:at), sx%a_star, ch%a(at + 1:)]
+      ch%c = [ch%c(:at), sx%c_star, ch%c(at + 1:)]
+      ch%p = [ch%p(:at), sx%p_star, ch%p(at + 1:)]
+      ch%g = [ch%g(:at), sx%gbar, ch%g(at + 1:)]
+      ch%y = [ch%y(:at), yx, ch%y(at + 1:)]
+      ch%zone = [ch%zone(:at), zone_inside, ch%zone(at + 1:)]
+      ch%event = [ch%event(:at), event_none, ch%event(at + 1:)]
+      ch%extremum = [ch%extremum(:at), .false., ch%extremum(at + 1:)]
+      ch%stable_after = [ch%stable_after(:at), .false., ch%stable_after(at + 1:)]
+      ch%untraced = [ch%untraced(:at), ch%untraced(at), ch%untraced(at + 1:)]
+      ch%n = ch%n + 1
+   end subroutine chain_insert
+
+   !> The chain interval below the tracer's first point a* = a_start (below_tracer: from
+   !> a* -> 0 to a_start, no traced point inside) can hold a turn of gbar* (gbar* -
+   !> gbar*(0) ~ a*^2 (k1 ln a* + k2), as P*): at alpha below ~4e-8 the retraction's
+   !> jump-out maximum lies there, and the walk went on to a* -> 0 past it (contact
+   !> lost after the most tensile state, g_P_min > g_interaction_lost). gbar* is sampled
+   !> at a* = a_start 10^(-k/2) down to where it is flat to round-off (or to 1e-9 of
+   !> a_start), and where it turns (by more than 1e-13 of gbar* on both sides) the turn
+   !> and its neighbouring samples join the chain, for locate_extrema to refine. Where
+   !> no turn is found the chain stays as traced.
+   subroutine sample_floor_intervals(model, params, ch, status, errmsg)
+      integer, intent(in) :: model
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(inout) :: ch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      integer, parameter :: n_max = 18
+      type(state_type) :: st(0:n_max + 1)
+      real(wp) :: x, t, noise, d1, d2
+      integer :: i, k, n, lo_end, hi_end, k_turn, k0, k1
+      logical :: done
+
+      status = wa_ok
+      if (.not. (model == model_dw .or. model == model_md) .or. params%sigma0 <= 0.0_wp) &
+         return
+      i = 1
+      do while (i < ch%n)
+         if (.not. below_tracer(ch, i)) then
+            i = i + 1
+            cycle
+         end if
+         lo_end = merge(i, i + 1, ch%a(i) < ch%a(i + 1))
+         hi_end = 2*i + 1 - lo_end
+         ! the round-off of gbar* of the point solves (MD's mean gap by quadrature: ~1e-14,
+         ! and its turns at that level flickered the gap map's mechanisms at alpha = 3)
+         noise = 1.0e-13_wp*max(abs(ch%g(i)), abs(ch%g(i + 1)))
+         st(0) = chain_state(ch, hi_end)         ! samples by falling a*
+         n = 0
+         do k = 1, n_max
+            x = ch%a(hi_end)*10.0_wp**(-0.5_wp*real(k, wp))
+            if (x <= ch%a(lo_end)) exit
+            t = (x - ch%a(i))/(ch%a(i + 1) - ch%a(i))
+            call local_state(model, params, ch, i, x, t, st(k), done, status, errmsg)
+            if (.not. done .and. status == wa_ok) call solve_at_a(model, params, x, &
+               ch%c(i) + t*(ch%c(i + 1) - ch%c(i)), zone_inside, st(k), status, errmsg)
+            if (status /= wa_ok .or. st(k)%zone_case /= zone_inside) exit
+            n = k
+            if (abs(st(k)%gbar - ch%g(lo_end)) <= noise) exit    ! flat from here down
+         end do
+         status = wa_ok                          ! the samples are a bonus
+         st(n + 1) = chain_state(ch, lo_end)
+         k_turn = 0
+         do k = 1, n
+            d1 = st(k)%gbar - st(k - 1)%gbar
+            d2 = st(k + 1)%gbar - st(k)%gbar
+            if (d1*d2 < 0.0_wp .and. min(abs(d1), abs(d2)) > noise) then
+               k_turn = k
+               exit
+            end if
+         end do
+         if (k_turn == 0) then
+            i = i + 1
+            cycle
+         end if
+         k0 = max(1, k_turn - 1); k1 = min(n, k_turn + 1)
+         ! insert after i in the chain's order (a* rising from i to i + 1 or falling)
+         do k = merge(k0, k1, lo_end == i), merge(k1, k0, lo_end == i), merge(1, -1, lo_end == i)
+            call chain_insert(ch, i, st(k), curve_variable(model, st(k)))
+         end do
+         i = i + (k1 - k0 + 1) + 1
+      end do
+   end subroutine sample_floor_intervals
 
    !> Mark the extrema of gbar* along the chain (refined to full precision where smooth)
    !> and the stability of each stretch: stable on the last, flipped at each extremum.
+   !> A run of equal gbar* (a plateau: at alpha ~ 1e-12 the whole no-contact piece lies
+   !> within a few ulps of 1) is an extremum, at its last point, where gbar* rises into it
+   !> and falls out of it (or the reverse); else the parity of the stability is lost.
    subroutine locate_extrema(model, params, ch, status, errmsg)
       integer, intent(in) :: model
       type(params_type), intent(in) :: params
@@ -449,11 +546,16 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       integer :: i
       logical :: stable
-      type(state_type) :: s
+      type(state_type) :: s, traced
+      real(wp) :: d_before
 
       status = wa_ok
+      allocate (ch%moved_s(ch%n), ch%moved_p(ch%n), ch%moved_g(ch%n), ch%moved_a(ch%n))
+      ch%n_moved = 0
+      d_before = 0.0_wp                    ! the last nonzero step of gbar* up to point i
       do i = 2, ch%n - 1
-         if ((ch%g(i) - ch%g(i - 1))*(ch%g(i + 1) - ch%g(i)) >= 0.0_wp) cycle
+         if (ch%g(i) /= ch%g(i - 1)) d_before = ch%g(i) - ch%g(i - 1)
+         if (d_before*(ch%g(i + 1) - ch%g(i)) >= 0.0_wp) cycle
          ch%extremum(i) = .true.
          if (ch%event(i) == event_switch) cycle      ! a corner: exact already
          if (param_kind(ch, i - 1) == param_kind(ch, i) .and. &
@@ -465,8 +567,16 @@ contains
             s = chain_state(ch, i)        ! bonus: the traced point stands
          end if
          if (status /= wa_ok) return
+         traced = chain_state(ch, i)
          ch%a(i) = s%a_star; ch%c(i) = s%c_star; ch%p(i) = s%p_star; ch%g(i) = s%gbar
          if (ch%y(i) /= 0.0_wp) ch%y(i) = curve_variable(model, chain_state(ch, i))
+         if (traced%a_star /= s%a_star .or. traced%c_star /= s%c_star) then
+            ch%n_moved = ch%n_moved + 1
+            ch%moved_s(ch%n_moved) = position_near(model, ch, i, traced)
+            ch%moved_p(ch%n_moved) = traced%p_star
+            ch%moved_g(ch%n_moved) = traced%gbar
+            ch%moved_a(ch%n_moved) = traced%a_star
+         end if
       end do
       stable = .true.
       do i = ch%n - 1, 1, -1
@@ -474,6 +584,37 @@ contains
          if (ch%extremum(i)) stable = .not. stable
       end do
    end subroutine locate_extrema
+
+   !> The chain position of state st on one of the intervals next to point i (i-1 or
+   !> i): where the interval's parameter takes st's value (clamped to the nearer one).
+   pure real(wp) function position_near(model, ch, i, st) result(pos)
+      integer, intent(in) :: model, i
+      type(chain_type), intent(in) :: ch
+      type(state_type), intent(in) :: st
+      real(wp) :: x, x0, x1, t, t_best, miss, miss_best
+      integer :: k, k_best
+      k_best = i; t_best = 0.0_wp; miss_best = huge(1.0_wp)
+      do k = i, i - 1, -1
+         select case (param_kind(ch, k))
+         case (1)
+            x = st%c_star
+         case (2)
+            x = st%gbar
+         case (3)
+            x = curve_variable(model, st)
+         case default
+            x = st%a_star
+         end select
+         x0 = param(ch, k, 0.0_wp); x1 = param(ch, k, 1.0_wp)
+         t = 0.5_wp
+         if (x1 /= x0) t = (x - x0)/(x1 - x0)
+         miss = max(-t, t - 1.0_wp, 0.0_wp)
+         if (miss < miss_best) then
+            miss_best = miss; k_best = k; t_best = min(max(t, 0.0_wp), 1.0_wp)
+         end if
+      end do
+      pos = real(k_best - 1, wp) + t_best
+   end function position_near
 
    !> The extremum of gbar* over the parameter between points i-1 and i+1 (Brent's
    !> minimisation, then a parabola-vertex step), or over a* when the two intervals use
@@ -492,11 +633,15 @@ contains
 
       status = wa_ok
       s = chain_state(ch, i)
-      sgn = merge(1.0_wp, -1.0_wp, ch%g(i) > ch%g(i - 1))    ! +1: maximum
+      sgn = merge(1.0_wp, -1.0_wp, ch%g(i) > ch%g(i + 1))    ! +1: maximum
       in_a = param_kind(ch, i - 1) /= param_kind(ch, i)
       if (in_a) then                   ! only within case 1, a* monotone across both
+         ! (a neighbour may be the closure of the MD no-contact states, a* = 0: the
+         ! interval to it is case 1 in a*, below the tracer's first point a* = 1e-6,
+         ! where the maximum the retraction jumps from can lie)
          if (.not. ((ch%a(i) - ch%a(i - 1))*(ch%a(i + 1) - ch%a(i)) > 0.0_wp .and. &
-            all(ch%zone(i - 1:i + 1) == zone_inside))) return
+            ch%zone(i) == zone_inside .and. closure_or_inside(i - 1) .and. &
+            closure_or_inside(i + 1))) return
          lo = ch%a(i - 1); hi = ch%a(i + 1)
       else
          lo = param(ch, i - 1, 0.0_wp); hi = param(ch, i, 1.0_wp)
@@ -508,6 +653,12 @@ contains
       if (status /= wa_ok) return
       if (-sgn*s%gbar > -sgn*ch%g(i)) s = chain_state(ch, i)    ! never worse than the point
    contains
+      pure logical function closure_or_inside(j)
+         integer, intent(in) :: j
+         closure_or_inside = ch%zone(j) == zone_inside .or. &
+            (ch%zone(j) == zone_no_contact .and. ch%a(j) == 0.0_wp)
+      end function closure_or_inside
+
       !> Brent's minimisation of -sgn gbar* over [a, b] (golden sections and parabolic
       !> steps) to 1e-9 of the bracket, x to ~sqrt(eps) of it in any case (gbar* is flat
       !> there): the vertex refinement below does the rest. s: the state at x.
@@ -670,6 +821,8 @@ contains
       if (ch%joined) path%g_touch = ch%g(1)
       call sample_switch_intervals(model, params, ch, status, errmsg)
       if (status /= wa_ok) return
+      call sample_floor_intervals(model, params, ch, status, errmsg)
+      if (status /= wa_ok) return
       call locate_extrema(model, params, ch, status, errmsg)
       if (status /= wa_ok) return
       call walk(model, params, ch, path, gap_stage_approach, walked, n_walked, status, errmsg)
@@ -713,7 +866,8 @@ contains
             end if
             if (s_pos /= 0.0_wp) then
                call add_far(path, stage, gap_event_jump_start, g)
-               call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, errmsg)
+               call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, &
+                  errmsg, g)
                if (status /= wa_ok) return
             end if
             far = .false.
@@ -768,7 +922,7 @@ contains
             call add_far(path, stage, gap_event_interaction_lost, g)
             return
          end if
-         call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, errmsg)
+         call add_at(model, params, ch, path, stage, gap_event_jump_end, s_pos, status, errmsg, g)
          if (status /= wa_ok) return
       end do
       call set_error(wa_numerical_error, "gap_path: more jumps than expected", status, errmsg)
@@ -1852,7 +2006,11 @@ contains
       call add(path, stage, event, s)
    end subroutine add_far
 
-   subroutine add_at(model, params, ch, path, stage, event, s_pos, status, errmsg)
+   !> The event at chain position s_pos. g_jump: the gbar* of the jump that lands there
+   !> (the landing keeps it: its solve in solve_gbar leaves gbar* within the parameter's
+   !> tolerance of it, relative 1e-11 and worse near full contact, so the event gets the
+   !> jump's gbar* exactly, the contract of a jump under gap control).
+   subroutine add_at(model, params, ch, path, stage, event, s_pos, status, errmsg, g_jump)
       integer, intent(in) :: model, stage, event
       type(params_type), intent(in) :: params
       type(chain_type), intent(in) :: ch
@@ -1860,6 +2018,7 @@ contains
       real(wp), intent(in) :: s_pos
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      real(wp), intent(in), optional :: g_jump
       type(state_type) :: s
       integer :: i
       real(wp) :: t
@@ -1874,17 +2033,24 @@ contains
          call state_at_param(model, params, ch, i, param(ch, i, t), s, status, errmsg)
          if (status /= wa_ok) return
       end if
+      if (present(g_jump)) s%gbar = g_jump
       call add(path, stage, event, s)
    end subroutine add_at
 
    ! ------------------------------------------------ critical values (appended)
 
    !> The events of the gap-controlled cycle (as gap_path, without W*: path%w_star = 0),
-   !> the most tensile load on the retraction, p_min, with its gbar* and a* (the least
-   !> P* over the retraction's events and the chain points its walked stretches cover:
-   !> along a stretch P* is extremal only at a fold of P*, a point of the traced branch
-   !> located to ~1e-11 in a*, or at a corner, a point too), and g_contact, the gbar*
-   !> where contact (a* > 0, or MD's contact-made event) is first made on the approach.
+   !> the most tensile load on the retraction, p_min, with its gbar* and a*, and
+   !> g_contact, the gbar* where contact (a* > 0, or MD's contact-made event) is first
+   !> made on the approach.
+   !> Invariant: p_min is the minimum of P* over every state the retraction passes, the
+   !> end points of its jumps included. Along a walked stretch P* is extremal only at a
+   !> fold of P* (a point of the traced branch, located to ~1e-11 in a*) or at a corner
+   !> (a point too), so the minimum is taken over the retraction's events, the chain
+   !> points its stretches cover, and the traced points that the refinement of a gbar*
+   !> extremum replaced where its stretches cover their positions (at small alpha a fold
+   !> of P* lies within one node of the gbar* maximum the retraction jumps from: it used
+   !> to be lost, and P_min was the jump's start, up to 2 % less tensile).
    subroutine gap_cycle_critical(model, params, branch, path, p_min, g_min, a_min, g_contact, &
          status, errmsg)
       integer, intent(in) :: model
@@ -1896,8 +2062,9 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       type(chain_type) :: ch
       type(stretch_type) :: walked(2*max_jumps + 4)
+      type(state_type) :: s
       integer :: n_walked, n_approach, k, i
-      real(wp) :: lo, hi
+      real(wp) :: lo, hi, g_end
 
       p_min = huge(1.0_wp); g_min = 0.0_wp; a_min = 0.0_wp; g_contact = -1.0_wp
       call walk_cycle(model, params, branch, ch, path, walked, n_walked, n_approach, &
@@ -1921,11 +2088,117 @@ contains
                p_min = ch%p(i); g_min = ch%g(i); a_min = ch%a(i)
             end if
          end do
+         ! the stretch ends at a chain point, its largest gbar*: a state beyond it is not
+         ! passed (where round-off hides a turn of gbar*, alpha below ~1e-10)
+         g_end = ch%g(nint(walked(k)%s2) + 1)
+         do i = 1, ch%n_moved                        ! traced points a refinement replaced
+            if (ch%moved_s(i) >= lo .and. ch%moved_s(i) <= hi .and. ch%moved_p(i) < p_min &
+               .and. ch%moved_g(i) <= g_end) then
+               p_min = ch%moved_p(i); g_min = ch%moved_g(i); a_min = ch%moved_a(i)
+            end if
+         end do
+         do i = max(1, int(lo) + 1), min(ch%n - 1, ceiling(hi))   ! intervals below a_start
+            if (.not. below_tracer(ch, i) .or. hi <= real(i - 1, wp) .or. lo >= real(i, wp)) &
+               cycle
+            call floor_minimum(model, params, ch, i, max(lo - real(i - 1, wp), 0.0_wp), &
+               min(hi - real(i - 1, wp), 1.0_wp), s, status, errmsg)
+            if (status /= wa_ok) return
+            if (s%p_star < p_min .and. s%gbar <= g_end) then
+               p_min = s%p_star; g_min = s%gbar; a_min = s%a_star
+            end if
+         end do
       end do
       if (.not. (p_min < huge(1.0_wp) .and. g_contact >= 0.0_wp)) call set_error( &
          wa_numerical_error, "gap_path: the cycle has no retraction or makes no contact", &
          status, errmsg)
    end subroutine gap_cycle_critical
+
+   !> Does chain interval i reach below the tracer's first point a* = a_start (1e-6)?
+   !> The a_limit extension of a contact curve, or the joint between the closure of MD's
+   !> no-contact states (a* = 0) and the contact curve (or a part of either between
+   !> samples of sample_floor_intervals): no traced point inside, case 1 in a* (or in
+   !> the curve variable y).
+   pure logical function below_tracer(ch, i)
+      type(chain_type), intent(in) :: ch
+      integer, intent(in) :: i
+      below_tracer = ch%untraced(i) .and. (param_kind(ch, i) == 0 .or. param_kind(ch, i) == 3)
+   end function below_tracer
+
+   !> The state of least P* on chain interval i between t0 and t1 (a below_tracer
+   !> interval). There P* - P*(a* -> 0) ~ a*^2 (k1 ln a* + k2) (doc/theory.md), which can
+   !> have a minimum, a fold of P* that no traced point shows (DW, alpha = 1e-7, mu = 0.91:
+   !> at a* ~ 3.5e-7, 1.2e-3 more tensile than P*(a* -> 0)). That form is unimodal in
+   !> ln a*: golden sections in ln a* over a* >= 1e-9 of the upper end (a minimum further
+   !> down is below 1e-18 of P*'s variation over the interval), to 1e-6 in ln a*
+   !> (P* to ~1e-12 of that variation), or in the curve variable y where that is the
+   !> interval's parameter (a* steep in it), to 1e-9 of its range. Where the sections
+   !> close on an end of the range, P* is monotone there: s is the better end point of
+   !> the interval (a chain point, as solved by the tracer).
+   subroutine floor_minimum(model, params, ch, i, t0, t1, s, status, errmsg)
+      integer, intent(in) :: model, i
+      type(params_type), intent(in) :: params
+      type(chain_type), intent(in) :: ch
+      real(wp), intent(in) :: t0, t1
+      type(state_type), intent(out) :: s
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      real(wp), parameter :: c = 0.3819660112501051518_wp
+      type(state_type) :: s1, s2
+      real(wp) :: ua, ub, x1, x2, a_lo, a_hi, tol, u_first, u_last
+      integer :: it
+      logical :: in_log
+
+      status = wa_ok
+      in_log = param_kind(ch, i) == 0
+      a_lo = min(param(ch, i, t0), param(ch, i, t1))
+      a_hi = max(param(ch, i, t0), param(ch, i, t1))
+      s = chain_state(ch, i)
+      if (ch%p(i + 1) < s%p_star) s = chain_state(ch, i + 1)
+      if (in_log) then
+         if (.not. (a_hi > 0.0_wp)) return
+         ua = log(max(a_lo, 1.0e-9_wp*a_hi)); ub = log(a_hi)
+         tol = 1.0e-6_wp
+      else
+         ua = a_lo; ub = a_hi
+         tol = 1.0e-9_wp*(ub - ua)
+      end if
+      if (.not. (ub > ua)) return
+      u_first = ua; u_last = ub
+      x1 = ua + c*(ub - ua); x2 = ub - c*(ub - ua)
+      call solve(x1, s1)
+      if (status /= wa_ok) return
+      call solve(x2, s2)
+      if (status /= wa_ok) return
+      do it = 1, 100
+         if (ub - ua <= tol) exit
+         if (s1%p_star <= s2%p_star) then
+            ub = x2; x2 = x1; s2 = s1
+            x1 = ua + c*(ub - ua)
+            call solve(x1, s1)
+         else
+            ua = x1; x1 = x2; s1 = s2
+            x2 = ub - c*(ub - ua)
+            call solve(x2, s2)
+         end if
+         if (status /= wa_ok) return
+      end do
+      ! an interior minimum only (both ends of the bracket moved), below the ends by more
+      ! than the round-off of the point solves; else P* is monotone (or flat) over the
+      ! range and its least value is the end's, a chain point
+      if (ua == u_first .or. ub == u_last) return
+      if (s2%p_star < s1%p_star) s1 = s2
+      if (s1%p_star < s%p_star - 16.0_wp*epsilon(1.0_wp)*abs(s%p_star)) s = s1
+   contains
+      subroutine solve(u, st)
+         real(wp), intent(in) :: u
+         type(state_type), intent(out) :: st
+         if (in_log) then
+            call state_at_param(model, params, ch, i, exp(u), st, status, errmsg)
+         else
+            call state_at_param(model, params, ch, i, u, st, status, errmsg)
+         end if
+      end subroutine solve
+   end subroutine floor_minimum
 
    ! ------------------------------------------- load-control jump energies
 

@@ -86,6 +86,31 @@ def fmt12(x):
     return f"{x:.12f}"
 
 
+def gap_critical_value(model, alpha, mu, column):
+    """One value of `wavyadhesion critical --control gap` (column as in its header)."""
+    out = cli("critical", "--control", "gap", "--model", model, "--alpha", alpha, "--mu", mu)
+    names = [line for line in out.splitlines() if line.startswith("# columns:")][0].split()[2:]
+    row = [line for line in out.splitlines() if line.strip() and not line.startswith("#")][-1]
+    return float(row.split()[names.index(column)])
+
+
+def gap_w_star(model, alpha, mu):
+    """W* of `wavyadhesion path --control gap`."""
+    out = cli("path", "--control", "gap", "--model", model, "--alpha", alpha, "--mu", mu)
+    return float(re.search(r"# W\* = (\S+)", out).group(1))
+
+
+def sci(x, digits):
+    """x as quoted in prose: 1.685963e-6, −4.99163e-7 (a typographic minus on the mantissa)."""
+    mantissa, exponent = f"{x:.{digits}e}".split("e")
+    return mantissa.replace("-", "−") + f"e{int(exponent)}"
+
+
+# the reproducers of the gap-control fixes (doc/theory.md, "Gap control")
+GAP_PF_DW = ("dw", "3.2953421004685887e-05", "843.70633645969394")
+GAP_FLOOR_MD = ("md", "0.0060257438729055621", "1.406552182111195")
+
+
 # (file, quoted text with {} for the number, function giving the number as it is quoted)
 CLAIMS = [
     ("doc/c-api.md", "α = 0.3, μ = 5 ({} points)", lambda: branch_points("dw", "0.3", "5")),
@@ -103,6 +128,9 @@ CLAIMS = [
     ("doc/python.md", 'repr(wa.trace_branch("dw", 0.3, 5.0))` is\n`{}`',
      lambda: python_value('repr(wa.trace_branch("dw", 0.3, 5.0))')),
     ("doc/user-guide.md", "closed forms ({} points", lambda: branch_points("westergaard")),
+    ("doc/theory.md", "against P_pf = {}", lambda: sci(critical(*GAP_PF_DW)[1], 5)),
+    ("doc/theory.md", "P_min is now {})", lambda: sci(gap_critical_value(*GAP_PF_DW, "P_min"), 5)),
+    ("doc/theory.md", "1.68596e-6, now {}).", lambda: sci(gap_w_star(*GAP_FLOOR_MD), 6)),
 ]
 
 

@@ -2,16 +2,18 @@
 !> "Gap control": Westergaard has no hysteresis (W* = 0) and its approach curve is
 !> gbar* = 1 - P* + P* ln P*; W* -> 0 as mu -> 0 for DW; W* >= 0; every jump starts
 !> where gbar* is extremal and keeps gbar*; the quadrature of W* is converged; every
-!> load-control jump that lands on the branch releases a finite energy >= 0.
+!> load-control jump that lands on the branch releases a finite energy >= 0; a jump's
+!> start and end share gbar* exactly; the jump-out maximum is found where it lies below the
+!> tracer's first point or next to it (against the model's roots scanned directly).
 module test_gappath
    use wavyadhesion
    use wa_kinds, only: wp
-   use wa_gappath, only: gap_path_from_branch
+   use wa_gappath, only: gap_path_from_branch, gap_event_jump_start, gap_event_jump_end
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
 
-   public :: collect_gappath
+   public :: collect_gappath, roots_extremum
 
 contains
 
@@ -30,7 +32,9 @@ contains
          new_unittest("gap_law_loop_is_the_energy", test_law_energy), &
          new_unittest("gap_law_bad_input", test_law_bad_input), &
          new_unittest("load_jump_energies", test_load_jump_energies), &
-         new_unittest("md_gbar_pair_before_switch", test_pair_before_switch)]
+         new_unittest("md_gbar_pair_before_switch", test_pair_before_switch), &
+         new_unittest("jump_ends_share_gbar", test_jump_ends_share), &
+         new_unittest("jump_out_near_tracer_floor", test_jump_out_floor)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -208,9 +212,12 @@ contains
       integer :: status, k
       ! (alpha 10, mu 3.1623: the point solves carry noise of 1e-13 of P*; the panels
       ! there were bisected to the limit and the path failed after ~1 s)
-      real(wp), parameter :: cases(3, 6) = reshape([0.3_wp, 1.0_wp, 1.0e-11_wp, &
+      ! (alpha 0.006026, mu 1.4066: the retraction jumps out of contact from a maximum of
+      ! gbar* next to the tracer's first point a* = 1e-6, test_jump_out_floor)
+      real(wp), parameter :: cases(3, 7) = reshape([0.3_wp, 1.0_wp, 1.0e-11_wp, &
          0.3_wp, 5.0_wp, 1.0e-11_wp, 1.0_wp, 1.0_wp, 1.0e-11_wp, 0.6_wp, 1.0_wp, 1.0e-11_wp, &
-         1.0_wp, 0.3_wp, 1.0e-11_wp, 10.0_wp, 3.1623_wp, 1.0e-11_wp], [3, 6])
+         1.0_wp, 0.3_wp, 1.0e-11_wp, 10.0_wp, 3.1623_wp, 1.0e-11_wp, &
+         0.0060257438729055621_wp, 1.406552182111195_wp, 1.0e-11_wp], [3, 7])
       do k = 1, size(cases, 2)
          call new_params(cases(1, k), cases(2, k), params, status)
          call trace_branch(model_md, params, b, status)
@@ -321,5 +328,147 @@ contains
       end do
       call check(error, n_jumps >= 4, "the cases have jumps")
    end subroutine test_load_jump_energies
+
+   !> The extremum over a* in [a_lo, a_hi] of gbar* (which = 1: maximum) or P* (which =
+   !> 2: minimum) along the equilibria of model_roots, followed from the root with c*
+   !> nearest c_ref (then nearest the previous one): golden sections in ln a* to 1e-10.
+   !> Independent of the branch tracer and of wa_gappath: the reference for their
+   !> extrema below and next to the tracer's first point.
+   subroutine roots_extremum(model, params, a_lo, a_hi, c_ref, which, st, ok)
+      integer, intent(in) :: model, which
+      type(params_type), intent(in) :: params
+      real(wp), intent(in) :: a_lo, a_hi, c_ref
+      type(state_type), intent(out) :: st
+      logical, intent(out) :: ok
+      real(wp), parameter :: gr = 0.3819660112501051518_wp
+      type(state_type) :: s1, s2
+      real(wp) :: ua, ub, x1, x2, c_track
+      integer :: it
+      c_track = c_ref
+      ua = log(a_lo); ub = log(a_hi)
+      x1 = ua + gr*(ub - ua); x2 = ub - gr*(ub - ua)
+      call root_at(exp(x1), s1, ok)
+      if (ok) call root_at(exp(x2), s2, ok)
+      do it = 1, 200
+         if (.not. ok .or. ub - ua <= 1.0e-10_wp) exit
+         if (value(s1) <= value(s2)) then
+            ub = x2; x2 = x1; s2 = s1
+            x1 = ua + gr*(ub - ua)
+            call root_at(exp(x1), s1, ok)
+         else
+            ua = x1; x1 = x2; s1 = s2
+            x2 = ub - gr*(ub - ua)
+            call root_at(exp(x2), s2, ok)
+         end if
+      end do
+      st = s1
+      if (value(s2) < value(s1)) st = s2
+   contains
+      real(wp) function value(s)
+         type(state_type), intent(in) :: s
+         value = merge(-s%gbar, s%p_star, which == 1)
+      end function value
+      subroutine root_at(a, s, found)
+         real(wp), intent(in) :: a
+         type(state_type), intent(out) :: s
+         logical, intent(out) :: found
+         type(state_type) :: roots(16)
+         integer :: n, r, best, status
+         found = .false.
+         call model_roots(model, params, a, roots, n, status)
+         if (status /= wa_ok .or. n < 1) return
+         best = 1
+         do r = 2, min(n, size(roots))
+            if (abs(roots(r)%c_star - c_track) < abs(roots(best)%c_star - c_track)) best = r
+         end do
+         s = roots(best)
+         call state_mean_gap(model, params, s, s%gbar, status)
+         found = status == wa_ok
+         c_track = s%c_star
+      end subroutine root_at
+   end subroutine roots_extremum
+
+   !> A jump under gap control keeps gbar*: start and end events carry the same gbar*, bit
+   !> for bit (the landing's solve leaves it within its tolerance: 0.4 % apart at gbar* ~
+   !> 2e-25, DW alpha 6.24e-5, mu 5.24e5, before), and the landing state's own mean gap,
+   !> recomputed here from its a*, c*, P*, is that gbar* to 1e-10 (the landing's solve
+   !> in the chain parameter: 2e-11 at the DW jump-in).
+   subroutine test_jump_ends_share(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 5
+      integer, parameter :: models(n) = [model_dw, model_dw, model_md, model_md, model_md]
+      real(wp), parameter :: alphas(n) = [6.2400615309035113e-05_wp, 0.3_wp, 0.3_wp, &
+         1.0e-3_wp, 0.0060257438729055621_wp]
+      real(wp), parameter :: mus(n) = [524243.36569139414_wp, 1.0_wp, 1.0_wp, 1.58_wp, &
+         1.406552182111195_wp]
+      type(gap_path_type) :: path
+      type(params_type) :: params
+      type(state_type) :: s
+      real(wp) :: g
+      integer :: j, k, status, n_jumps
+      do j = 1, n
+         call path_of(models(j), alphas(j), mus(j), path, error)
+         if (allocated(error)) return
+         call new_params(alphas(j), mus(j), params, status)
+         n_jumps = 0
+         do k = 1, path%n - 1
+            if (path%event(k) /= gap_event_jump_start) cycle
+            n_jumps = n_jumps + 1
+            call check(error, path%event(k + 1) == gap_event_jump_end .and. &
+               path%gbar(k + 1) == path%gbar(k), "jump start and end share gbar*")
+            if (allocated(error)) return
+            if (path%zone_case(k + 1) /= zone_inside .and. &
+               path%zone_case(k + 1) /= zone_whole_period) cycle
+            s%a_star = path%a_star(k + 1); s%c_star = path%c_star(k + 1)
+            s%p_star = path%p_star(k + 1); s%zone_case = path%zone_case(k + 1)
+            s%gap_width = s%c_star - s%a_star
+            call state_mean_gap(models(j), params, s, g, status)
+            call check_close(error, g, path%gbar(k + 1), 0.0_wp, 1.0e-10_wp, &
+               what="the landing state's mean gap")
+            if (allocated(error)) return
+         end do
+         call check(error, n_jumps >= 1, "the cycle has jumps")
+      end do
+   end subroutine test_jump_ends_share
+
+   !> The retraction jumps out of contact from the maximum of gbar* over the contact
+   !> states, wherever the tracer's first point a* = 1e-6 puts it: MD alpha 0.006026,
+   !> mu 1.4066, just above it (at a* = 2e-4, in the interval from the first point; the jump
+   !> used to start at a* = 1e-6 and W* was 1.685656e-6, 1.8e-4 low), DW alpha 1e-9, mu 63.1,
+   !> below it (a* ~ 1e-7; the retraction used to run on to a* -> 0, losing contact at
+   !> gbar* 1.3e-11 below the maximum). The maximum: roots_extremum over the model's roots.
+   !> MD's W* against the independent quadrature of tools/check_gap_energy_md.py.
+   subroutine test_jump_out_floor(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: models(2) = [model_md, model_dw]
+      real(wp), parameter :: alphas(2) = [0.0060257438729055621_wp, 1.0e-9_wp]
+      real(wp), parameter :: mus(2) = [1.406552182111195_wp, 63.0957344480193_wp]
+      real(wp), parameter :: a_lo(2) = [1.0e-6_wp, 1.0e-10_wp], a_hi(2) = [1.0e-2_wp, 1.0e-5_wp]
+      type(gap_path_type) :: path
+      type(params_type) :: params
+      type(state_type) :: top
+      integer :: j, k, status, last
+      logical :: ok
+      do j = 1, 2
+         call path_of(models(j), alphas(j), mus(j), path, error)
+         if (allocated(error)) return
+         call new_params(alphas(j), mus(j), params, status)
+         last = 0                                    ! the last jump from a contact state
+         do k = 1, path%n - 1
+            if (path%stage(k) == gap_stage_retraction .and. path%event(k) == &
+               gap_event_jump_start .and. path%a_star(k) > 0.0_wp) last = k
+         end do
+         call check(error, last > 0, "the retraction jumps out of contact")
+         if (allocated(error)) return
+         call roots_extremum(models(j), params, a_lo(j), a_hi(j), path%c_star(last), 1, top, ok)
+         call check(error, ok, "roots scan")
+         call check_close(error, path%gbar(last), top%gbar, 0.0_wp, 1.0e-14_wp, &
+            what="jump-out at the maximum of gbar*")
+         ! (gbar* is flat at its maximum: a* to ~sqrt of gbar*'s round-off there)
+         call check_close(error, path%a_star(last), top%a_star, 2.0e-2_wp, &
+            what="a* of the maximum")
+         if (allocated(error)) return
+      end do
+   end subroutine test_jump_out_floor
 
 end module test_gappath
