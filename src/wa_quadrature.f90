@@ -7,7 +7,7 @@
 !>   wa_quad_istar_carlson  the Carlson form with GSL's R_F, R_D, R_J (istar_carlson)
 !>   wa_quad_istar_qag      GSL QAG (Gauss-Kronrod 21) of (E1) on the accurate coefficients
 !> MD, K = int_0^1 artanh(r) r G(r) dr, G = 1/((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)),
-!> Psi_c = -(2/pi) A q sin^2 s K (src/wa_md.f90):
+!> Psi_c = -(2/pi) A q sin^2 s K (src/wa_md_psi.f90):
 !>   psi_gauss_rules, k_gauss  singularity subtraction only: an N-node Gauss rule for the
 !>                             weight -ln(1-r) plus N-node Gauss-Legendre for ln(1+r)
 !>   wa_quad_psi_k             GSL QAWS (weight ln(1-r)) + QAG for the ln(1+r) part, or GSL
