@@ -22,7 +22,8 @@ module wa_branch
       curve_case2_load, curve_variable, curve_equilibrium
    use wa_models, only: check_model, model_roots, model_equilibrium, max_model_roots
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
-   use wa_separation, only: state_mean_gap, md_no_contact_family, dw_state_gbar, md_state_gbar
+   use wa_separation, only: state_mean_gap, dw_state_gbar, md_state_gbar
+   use wa_md_nocontact, only: md_no_contact_family
    use wa_branch_types, only: branch_type, trace_options, append, reserve
    use wa_branch_step, only: curve_point, corrector, orient, locate_zero, crosses_case2, &
       case1_extremum, switch_abscissa, case2_point, case2_slope, corner_extremum
@@ -188,7 +189,7 @@ contains
    !> MD states without contact (zone case 0, a* = 0: a Dugdale zone |x*| < c* around the
    !> crest, P* = -2 Sigma0 c*), as pieces of their own ahead of the contact curve: from the
    !> first interaction (c* = 0, P* = 0) to where the crest gap closes and the family joins
-   !> the a* -> 0 end of the contact curve (wa_separation, md_no_contact_family; a second
+   !> the a* -> 0 end of the contact curve (wa_md_nocontact, md_no_contact_family; a second
    !> piece where the crest gap reopens). P* falls monotonically along them, so under load
    !> control their stability cannot change, and at the first interaction a tensile load
    !> pulls the surfaces into the growing zone: none is stable under load control.

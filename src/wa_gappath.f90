@@ -15,7 +15,8 @@ module wa_gappath
    use wa_state, only: state_type, zone_no_contact, zone_inside, zone_whole_period, &
       zone_full_contact, model_md, model_dw
    use wa_models, only: model_roots, max_model_roots
-   use wa_separation, only: state_mean_gap, md_no_contact_state, dw_state_gbar, md_state_gbar
+   use wa_separation, only: state_mean_gap, dw_state_gbar, md_state_gbar
+   use wa_md_nocontact, only: md_no_contact_state
    use wa_curve, only: curve_residual, curve_state, curve_variable, curve_weight, &
       curve_case2_load, curve_y_max
    use wa_branch, only: branch_type, trace_branch, event_switch, event_branch_end, &

@@ -16,8 +16,8 @@ module wa_models
    use wa_kernels, only: westergaard_load, jkr_load
    use wa_dw, only: dw_equilibrium, dw_roots
    use wa_md, only: md_equilibrium, md_roots
-   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, md_no_contact_state, &
-      state_profile
+   use wa_md_nocontact, only: md_no_contact_state
+   use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, state_profile
    implicit none
    private
 

@@ -1,13 +1,15 @@
 !> The alternative quadratures that the options of dw_equilibrium and md_equilibrium
 !> select in place of the library's closed form (DW's W = I*/(C^2-A^2)^2) and fixed graded
 !> Gauss rules (MD's Psi_c): what the work-precision study (doc/accuracy-performance.md)
-!> measures the defaults against. None is used unless an option asks for it.
+!> measures the defaults against. None is used unless an option asks for it. Also the
+!> library's one literal 16-point Gauss-Legendre rule on [0, 1] (gl16_x, gl16_w), which
+!> the mean gap and the MD gap of src/wa_separation.f90 sum their panels with.
 !>
 !> DW, W by (E1) of src/wa_elliptic.f90:
 !>   wa_quad_istar_carlson  the Carlson form with GSL's R_F, R_D, R_J (istar_carlson)
 !>   wa_quad_istar_qag      GSL QAG (Gauss-Kronrod 21) of (E1) on the accurate coefficients
 !> MD, K = int_0^1 artanh(r) r G(r) dr, G = 1/((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)),
-!> Psi_c = -(2/pi) A q sin^2 s K (src/wa_md.f90):
+!> Psi_c = -(2/pi) A q sin^2 s K (src/wa_md_psi.f90):
 !>   psi_gauss_rules, k_gauss  singularity subtraction only: an N-node Gauss rule for the
 !>                             weight -ln(1-r) plus N-node Gauss-Legendre for ln(1+r)
 !>   wa_quad_psi_k             GSL QAWS (weight ln(1-r)) + QAG for the ln(1+r) part, or GSL
@@ -38,6 +40,29 @@ module wa_quadrature
    public :: wa_quad_istar_carlson, wa_quad_istar_qag, wa_quad_psi_k
    public :: psi_gauss_rules, k_gauss, psi_k_gsl, sort2
    public :: quad_psi_qaws, quad_psi_qag, quad_psi_qags
+   public :: gl16_x, gl16_w
+
+   !> Gauss-Legendre, 16 points on [0, 1] (the panels of src/wa_separation.f90). Literal
+   !> constants, not gauss_legendre01(16): nodes computed in double at run time would not
+   !> be bit-identical to these.
+   real(wp), parameter :: gl16_x(16) = [ &
+      0.005299532504175033701923_wp, 0.02771248846338371196101_wp, &
+      0.06718439880608412805977_wp, 0.1222977958224984867434_wp, &
+      0.1910618777986781147139_wp, 0.2709916111713863151807_wp, &
+      0.3591982246103705422868_wp, 0.4524937450811812866824_wp, &
+      0.5475062549188187133176_wp, 0.6408017753896294577132_wp, &
+      0.7290083888286136848193_wp, 0.8089381222013218852861_wp, &
+      0.8777022041775015132566_wp, 0.9328156011939158719402_wp, &
+      0.972287511536616288039_wp, 0.9947004674958249662981_wp]
+   real(wp), parameter :: gl16_w(16) = [ &
+      0.01357622970587704742589_wp, 0.03112676196932394643142_wp, &
+      0.04757925584124639240497_wp, 0.06231448562776693602624_wp, &
+      0.07479799440828836604818_wp, 0.08457825969750126909095_wp, &
+      0.09130170752246179306009_wp, 0.09472530522753424814233_wp, &
+      0.09472530522753424814233_wp, 0.09130170752246179306009_wp, &
+      0.08457825969750126909095_wp, 0.07479799440828836604818_wp, &
+      0.06231448562776693602624_wp, 0.04757925584124639240497_wp, &
+      0.03112676196932394643142_wp, 0.01357622970587704742589_wp]
 
    !> Methods of wa_quad_psi_k
    integer, parameter :: quad_psi_qaws = 1, quad_psi_qag = 2, quad_psi_qags = 3

@@ -1,6 +1,7 @@
 !> Separation of a solved state (doc/theory.md, "Separation"): the traction p(x)/p* and
-!> the gap h(x)/Delta over one period (crest at x* = 0), the mean gap gbar* = gbar/Delta,
-!> and the Maugis-Dugdale states without contact (zone case 0).
+!> the gap h(x)/Delta over one period (crest at x* = 0) and the mean gap gbar* = gbar/Delta,
+!> for every model and zone case, the MD states without contact (zone case 0) among them
+!> (those states themselves, the family and its closures, are wa_md_nocontact's).
 !>
 !> In units of Delta and p* (x* = x/L, S = sin(pi x*), A = sin(pi a*), C = sin(pi c*),
 !> q = cos(pi a*), r = sqrt(S^2 - A^2), h_W(a) the Westergaard gap of wa_kernels):
@@ -22,23 +23,22 @@ module wa_separation
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_negative_inf, &
       ieee_is_finite
    use wa_kinds, only: wp, pi
-   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, wa_not_converged, &
-      wa_numerical_error, set_error
+   use wa_status, only: wa_ok, wa_invalid_argument, wa_no_solution, set_error
    use wa_validate, only: check_range
    use wa_params, only: params_type, check_params
    use wa_state, only: state_type, zone_inside, zone_whole_period, zone_full_contact, &
       zone_no_contact, model_westergaard, model_jkr, model_dw, model_md
    use wa_gsl, only: gsl_sf_clausen
-   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_math, only: log1p, sin_pi_sum, sqrt_sin_pi, sqrt_sin_pi_sum
    use wa_kernels, only: small_contact_gap, sqrt_tiny, shape
+   use wa_quadrature, only: gl_x => gl16_x, gl_w => gl16_w
    implicit none
    private
 
    public :: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, md_state_gbar, dw_mean_gap
    public :: state_mean_gap, state_profile, state_traction, state_gap, check_state
-   public :: md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures
-   public :: md_no_contact_family
+   !> for wa_md_nocontact: the closed forms of the no-contact crest gap and Cl2(2 pi c*)
+   public :: no_contact_crest, no_contact_clausen
 
    !> What a profile needs of a state, computed once (x-independent).
    type :: separation_context
@@ -55,30 +55,11 @@ module wa_separation
       real(wp) :: hmc = 0.0_wp
    end type separation_context
 
-   !> Gauss-Legendre, 16 points on [0, 1]
-   real(wp), parameter :: gl_x(16) = [ &
-      0.005299532504175033701923_wp, 0.02771248846338371196101_wp, &
-      0.06718439880608412805977_wp, 0.1222977958224984867434_wp, &
-      0.1910618777986781147139_wp, 0.2709916111713863151807_wp, &
-      0.3591982246103705422868_wp, 0.4524937450811812866824_wp, &
-      0.5475062549188187133176_wp, 0.6408017753896294577132_wp, &
-      0.7290083888286136848193_wp, 0.8089381222013218852861_wp, &
-      0.8777022041775015132566_wp, 0.9328156011939158719402_wp, &
-      0.972287511536616288039_wp, 0.9947004674958249662981_wp]
-   real(wp), parameter :: gl_w(16) = [ &
-      0.01357622970587704742589_wp, 0.03112676196932394643142_wp, &
-      0.04757925584124639240497_wp, 0.06231448562776693602624_wp, &
-      0.07479799440828836604818_wp, 0.08457825969750126909095_wp, &
-      0.09130170752246179306009_wp, 0.09472530522753424814233_wp, &
-      0.09472530522753424814233_wp, 0.09130170752246179306009_wp, &
-      0.08457825969750126909095_wp, 0.07479799440828836604818_wp, &
-      0.06231448562776693602624_wp, 0.04757925584124639240497_wp, &
-      0.03112676196932394643142_wp, 0.01357622970587704742589_wp]
    !> Tanh-sinh step and half-range (|t| <= ts_range): 2 ts_range/ts_step + 1 nodes.
    real(wp), parameter :: ts_step = 1.0_wp/16.0_wp, ts_range = 3.4_wp
    !> Panels of the graded rules grow by this factor away from the near-singularity.
    real(wp), parameter :: grade = 4.0_wp
-   integer, parameter :: max_panels = 400, max_iterations = 200
+   integer, parameter :: max_panels = 400
 
 contains
 
@@ -319,218 +300,7 @@ contains
       end if
    end subroutine check_state
 
-   ! ================================================================ MD, no contact
-
-   !> Crest gap h(0)/Delta of the no-contact MD state with zone half-width c* in [0, 1/2]:
-   !>   2 Dcod - 2 C^2 + (Sigma0/pi) [Cl2(4 pi c*) - 2 Cl2(2 pi c*)]   (h(c*) = 2 Dcod).
-   !> NaN outside [0, 1/2].
-   elemental function md_no_contact_crest_gap(params, c_star) result(h)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: c_star
-      real(wp) :: h
-      if (.not. (c_star >= 0.0_wp .and. c_star <= 0.5_wp)) then
-         h = ieee_value(h, ieee_quiet_nan)
-         return
-      end if
-      h = crest_of(params, c_star)
-   end function md_no_contact_crest_gap
-
-   !> The no-contact MD state (zone case 0, a* = 0) with cohesive half-width c* in
-   !> [0, 1/2]: P* = -2 Sigma0 c*, gbar from the Clausen closed form. At c* = 1/2 the
-   !> state is not fixed by c*: pass crest_gap in [0, 2 Dcod - 2] (then P* = -Sigma0,
-   !> gbar = 1 + crest_gap). wa_no_solution where the crest gap would be negative
-   !> (the surfaces would touch: a contact state) or mu = 0 (no cohesive zone).
-   pure subroutine md_no_contact_state(params, c_star, state, status, errmsg, crest_gap)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: c_star
-      type(state_type), intent(out) :: state
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      real(wp), intent(in), optional :: crest_gap
-      real(wp) :: h00
-
-      call check_params(params, status, errmsg)
-      if (status /= wa_ok) return
-      call check_range("c_star", c_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
-      if (status /= wa_ok) return
-      if (params%sigma0 == 0.0_wp) then
-         call set_error(wa_no_solution, "md: mu = 0 has no cohesive zone, hence no "// &
-            "no-contact states", status, errmsg)
-         return
-      end if
-      if (c_star == 0.5_wp) then
-         if (.not. present(crest_gap)) then
-            call set_error(wa_invalid_argument, "crest_gap: needed at c_star = 1/2 (the "// &
-               "zone covers the period; the crest gap is free)", status, errmsg)
-            return
-         end if
-         call check_range("crest_gap", crest_gap, 0.0_wp, max(0.0_wp, 2.0_wp*params%dcod - &
-            2.0_wp), "[0, 2 Dcod - 2]", status, errmsg)
-         if (status /= wa_ok) return
-         if (params%dcod < 1.0_wp) then
-            call set_error(wa_no_solution, "md: the zone cannot cover the period without "// &
-               "contact when Dcod < 1", status, errmsg)
-            return
-         end if
-         h00 = crest_gap
-      else
-         h00 = crest_of(params, c_star)
-         if (h00 < 0.0_wp) then
-            call set_error(wa_no_solution, "md: no no-contact state at this c_star (the "// &
-               "crest gap would be negative)", status, errmsg)
-            return
-         end if
-      end if
-      state%a_star = 0.0_wp
-      state%c_star = c_star
-      state%gap_width = c_star
-      state%zone_case = zone_no_contact
-      if (c_star == 0.5_wp) then
-         state%p_star = -params%sigma0
-         state%gbar = 1.0_wp + h00
-      else
-         state%p_star = 0.0_wp - 2.0_wp*params%sigma0*c_star     ! +0 at c* = 0
-         state%gbar = h00 + 1.0_wp + (2.0_wp*params%sigma0/pi)*clausen_2pi(c_star)
-      end if
-   end subroutine md_no_contact_state
-
-   !> Where the no-contact states close (crest gap = 0, joining the a* -> 0 end of the
-   !> contact curve). The crest gap H(c*) decreases on (0, 1/3) and is convex on (1/4, 1/2),
-   !> so it has one minimum c_min in [1/3, 1/2) and at most two zeros: n_close of them are
-   !> returned in c_close(1:n_close), increasing. stretch is true when Dcod >= 1: then the
-   !> states with c* = 1/2 (crest gap in [0, 2 Dcod - 2], P* = -Sigma0) exist too.
-   pure subroutine md_no_contact_closures(params, c_close, n_close, stretch, status, errmsg)
-      type(params_type), intent(in) :: params
-      real(wp), intent(out) :: c_close(2)
-      integer, intent(out) :: n_close
-      logical, intent(out) :: stretch
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      real(wp) :: c_min, h_min, h_top
-
-      c_close = 0.5_wp
-      n_close = 0
-      stretch = .false.
-      call check_params(params, status, errmsg)
-      if (status /= wa_ok) return
-      if (params%sigma0 == 0.0_wp) then
-         call set_error(wa_no_solution, "md: mu = 0 has no cohesive zone, hence no "// &
-            "no-contact states", status, errmsg)
-         return
-      end if
-      stretch = params%dcod >= 1.0_wp
-      call crest_minimum(params, c_min, status, errmsg)
-      if (status /= wa_ok) return
-      h_min = crest_of(params, c_min)
-      if (h_min >= 0.0_wp) return
-      n_close = 1
-      call crest_zero(params, 0.0_wp, c_min, c_close(1), status, errmsg)
-      if (status /= wa_ok) return
-      h_top = 2.0_wp*params%dcod - 2.0_wp
-      if (h_top > 0.0_wp) then
-         n_close = 2
-         call crest_zero(params, c_min, 0.5_wp, c_close(2), status, errmsg)
-      end if
-   end subroutine md_no_contact_closures
-
-   !> size(states) no-contact MD states along one piece of the family, in order along it.
-   !> piece 1: from the first interaction (c* = 0, P* = 0, gbar = 1 + 2 Dcod) to where the
-   !>   crest gap closes: at c_close(1), or, if the crest never closes for c* < 1/2, up
-   !>   to c* = 1/2 and then along c* = 1/2 with the crest gap falling from 2 Dcod - 2 to 0.
-   !> piece 2 (exists only when the crest gap closes at c_close(1) and reopens, Dcod > 1):
-   !>   from the closure at c_close(2) up to c* = 1/2, then the crest gap from 2 Dcod - 2
-   !>   to 0; n_states = 0 if it does not exist.
-   !> The last state of a piece has crest gap 0 (it joins the a* -> 0 end of the contact
-   !> curve at that c*). c* is sampled densely near c* = 0 (gbar ~ c* ln c* there).
-   pure subroutine md_no_contact_family(params, piece, states, n_states, status, errmsg)
-      type(params_type), intent(in) :: params
-      integer, intent(in) :: piece
-      type(state_type), intent(inout) :: states(:)
-      integer, intent(out) :: n_states
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      real(wp) :: c_close(2), c_lo, c_hi, t, h_top
-      integer :: n_close, n, n_c, n_s, i
-      logical :: stretch, with_stretch
-
-      n_states = 0
-      n = size(states)
-      if (piece /= 1 .and. piece /= 2) then
-         call set_error(wa_invalid_argument, "piece: must be 1 (from the first interaction) "// &
-            "or 2 (the piece between the second closure and c_star = 1/2)", status, errmsg)
-         return
-      end if
-      if (n < 3) then
-         call set_error(wa_invalid_argument, "states: need room for at least 3 states", &
-            status, errmsg)
-         return
-      end if
-      call md_no_contact_closures(params, c_close, n_close, stretch, status, errmsg)
-      if (status /= wa_ok) return
-      h_top = 2.0_wp*params%dcod - 2.0_wp
-      if (piece == 1) then
-         c_lo = 0.0_wp
-         with_stretch = n_close == 0
-         c_hi = merge(0.5_wp, c_close(1), with_stretch)
-      else
-         if (n_close < 2) return
-         c_lo = c_close(2)
-         c_hi = 0.5_wp
-         with_stretch = .true.
-      end if
-      n_s = 0
-      if (with_stretch .and. h_top > 0.0_wp) n_s = max(1, n/4)
-      n_c = n - n_s
-      do i = 1, n_c
-         t = real(i - 1, wp)/real(n_c - 1, wp)
-         if (piece == 1) then
-            call family_state(params, c_lo + (c_hi - c_lo)*t*t, h_top, states(i), status, errmsg)
-         else
-            call family_state(params, c_lo + (c_hi - c_lo)*t, h_top, states(i), status, errmsg)
-         end if
-         if (status /= wa_ok) return
-      end do
-      do i = 1, n_s
-         call family_state(params, 0.5_wp, h_top, states(n_c + i), status, errmsg, &
-            h_top*real(n_s - i, wp)/real(n_s, wp))
-         if (status /= wa_ok) return
-      end do
-      n_states = n
-   end subroutine md_no_contact_family
-
    ! ================================================================ internals
-
-   !> One state of md_no_contact_family: at c (clamped to [0, 1/2]); at c = 1/2 with the
-   !> crest gap `crest` (default h_top, where the c*-part meets the stretch).
-   pure subroutine family_state(params, c, h_top, s, status, errmsg, crest)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: c, h_top
-      type(state_type), intent(inout) :: s
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      real(wp), intent(in), optional :: crest
-      real(wp) :: cc
-      cc = min(0.5_wp, max(0.0_wp, c))
-      if (present(crest)) then
-         call md_no_contact_state(params, cc, s, status, errmsg, crest)
-      else if (cc == 0.5_wp) then
-         call md_no_contact_state(params, cc, s, status, errmsg, max(0.0_wp, h_top))
-      else
-         call md_no_contact_state(params, cc, s, status, errmsg)
-         ! at a closure round-off may leave the crest gap a hair below 0: try the
-         ! neighbours within 4 eps, never past 1/2 (there the crest gap is the variable)
-         if (status == wa_no_solution) then
-            call md_no_contact_state(params, cc*(1.0_wp - 4.0_wp*epsilon(1.0_wp)), s, &
-               status, errmsg)
-            if (status /= wa_ok .and. cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)) < 0.5_wp) &
-               call md_no_contact_state(params, cc*(1.0_wp + 4.0_wp*epsilon(1.0_wp)), s, &
-               status, errmsg)
-            if (status /= wa_ok) call set_error(wa_numerical_error, "md: the no-contact "// &
-               "crest gap is negative to round-off next to where it closes (not resolved "// &
-               "in double precision at this alpha, mu)", status, errmsg)
-         end if
-      end if
-   end subroutine family_state
 
    !> x* folded into [0, 1/2].
    elemental function reduced(x_star) result(xr)
@@ -659,7 +429,7 @@ contains
          if (state%c_star == 0.5_wp) then
             ctx%crest = state%gbar - 1.0_wp
          else
-            ctx%crest = crest_of(params, state%c_star)
+            ctx%crest = no_contact_crest(params, state%c_star)
          end if
       end if
       if (model == model_dw .and. ctx%d2 > 0.0_wp .and. ctx%zone /= zone_full_contact) then
@@ -678,7 +448,7 @@ contains
    !> for c* >= 1/4 it is evaluated so, from the exact 1/2 - c*: the two-term form rounds
    !> 4 pi c* next to 2 pi, where Cl2 is log-singular, and Sigma0 (up to 1e22 in the domain)
    !> magnifies that error (H(1/2) came out as -2e7 instead of 2 Dcod - 2 at mu = 2.6e14).
-   elemental function crest_of(params, c_star) result(h)
+   elemental function no_contact_crest(params, c_star) result(h)
       type(params_type), intent(in) :: params
       real(wp), intent(in) :: c_star
       real(wp) :: h, bracket
@@ -688,12 +458,12 @@ contains
          bracket = gsl_sf_clausen(4.0_wp*pi*c_star) - 2.0_wp*gsl_sf_clausen(2.0_wp*pi*c_star)
       end if
       h = 2.0_wp*params%dcod - 2.0_wp*sin(pi*c_star)**2 + (params%sigma0/pi)*bracket
-   end function crest_of
+   end function no_contact_crest
 
    !> Cl2(2 pi c*) for c* in [0, 1/2]. For c* >= 1/4 from d = 1/2 - c* (exact) as
    !> Cl2(2 pi d) - Cl2(4 pi d)/2 (duplication): 2 pi c* rounds next to pi, where Cl2 has
    !> slope -ln 2, and Sigma0 (up to 1e22) multiplies the result.
-   elemental function clausen_2pi(c_star) result(cl)
+   elemental function no_contact_clausen(c_star) result(cl)
       real(wp), intent(in) :: c_star
       real(wp) :: cl, d
       if (c_star >= 0.25_wp) then
@@ -702,75 +472,7 @@ contains
       else
          cl = gsl_sf_clausen(2.0_wp*pi*c_star)
       end if
-   end function clausen_2pi
-
-   !> dH/dc* = -2 pi sin(2 pi c*) - 4 Sigma0 ln(2 cos(pi c*))
-   elemental function crest_slope(params, c_star) result(d)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: c_star
-      real(wp) :: d
-      d = -2.0_wp*pi*sin(2.0_wp*pi*c_star) - 4.0_wp*params%sigma0* &
-         log(2.0_wp*sin(pi*(0.5_wp - c_star)))
-   end function crest_slope
-
-   !> The minimum of the crest gap: the zero of dH/dc* in [1/3, 1/2).
-   pure subroutine crest_minimum(params, c_min, status, errmsg)
-      type(params_type), intent(in) :: params
-      real(wp), intent(out) :: c_min
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      type(brent_type) :: solver
-      real(wp) :: x, hi
-      logical :: done
-      integer :: iter
-      ! dH/dc* -> +inf as c* -> 1/2: walk up until it is positive
-      hi = 0.5_wp - 1.0e-3_wp
-      do iter = 1, 300
-         if (crest_slope(params, hi) > 0.0_wp) exit
-         hi = 0.5_wp - 0.5_wp*(0.5_wp - hi)
-      end do
-      call brent_init(solver, 1.0_wp/3.0_wp, crest_slope(params, 1.0_wp/3.0_wp), hi, &
-         crest_slope(params, hi), 1.0e-16_wp)
-      do iter = 1, max_iterations
-         call brent_propose(solver, x, done)
-         if (done) exit
-         call brent_accept(solver, crest_slope(params, x))
-      end do
-      c_min = solver%b
-      if (done) then
-         status = wa_ok
-      else
-         call set_error(wa_not_converged, "md: the minimum of the no-contact crest gap "// &
-            "did not converge", status, errmsg)
-      end if
-   end subroutine crest_minimum
-
-   !> The zero of the crest gap between lo and hi (where it changes sign).
-   pure subroutine crest_zero(params, lo, hi, c0, status, errmsg)
-      type(params_type), intent(in) :: params
-      real(wp), intent(in) :: lo, hi
-      real(wp), intent(out) :: c0
-      integer, intent(out) :: status
-      character(len=*), intent(inout), optional :: errmsg
-      type(brent_type) :: solver
-      real(wp) :: x
-      logical :: done
-      integer :: iter
-      call brent_init(solver, lo, crest_of(params, lo), hi, crest_of(params, hi), 1.0e-300_wp)
-      do iter = 1, max_iterations
-         call brent_propose(solver, x, done)
-         if (done) exit
-         call brent_accept(solver, crest_of(params, x))
-      end do
-      ! the end of the final bracket where the crest gap is >= 0: the state there exists
-      c0 = merge(solver%b, solver%c, solver%fb >= 0.0_wp)
-      if (done) then
-         status = wa_ok
-      else
-         call set_error(wa_not_converged, "md: the closure of the no-contact crest gap "// &
-            "did not converge", status, errmsg)
-      end if
-   end subroutine crest_zero
+   end function no_contact_clausen
 
    !> Mean gap of any valid state.
    pure function gbar_of(ctx) result(g)
@@ -817,7 +519,7 @@ contains
          if (ctx%c_star == 0.5_wp) then
             g = ctx%crest + 1.0_wp
          else
-            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*clausen_2pi(ctx%c_star)
+            g = ctx%crest + 1.0_wp + (2.0_wp*ctx%sigma0/pi)*no_contact_clausen(ctx%c_star)
          end if
       else if (ctx%c_star == 0.5_wp .or. ctx%d2 == 0.0_wp) then
          g = gw_of(ctx%a**2, ctx%q**2)              ! case 2: uniform -Sigma0 adds no deformation

@@ -21,9 +21,9 @@ module wavyadhesion
    use wa_models, only: check_model, model_equilibrium, model_roots, model_state, &
       model_profile, state_c_tolerance
    use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
-      md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state, &
-      md_no_contact_crest_gap, md_no_contact_state, md_no_contact_closures, &
-      md_no_contact_family
+      md_state_gbar, dw_mean_gap, state_mean_gap, state_profile, state_traction, state_gap, check_state
+   use wa_md_nocontact, only: md_no_contact_crest_gap, md_no_contact_state, &
+      md_no_contact_closures, md_no_contact_family
    use wa_branch_types, only: branch_type, trace_options
    use wa_branch, only: trace_branch, event_none, event_fold, event_switch, &
       event_jump_start, event_jump_end, event_full_contact_reached, &

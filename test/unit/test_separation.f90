@@ -6,6 +6,9 @@ module test_separation
    use wavyadhesion
    use wa_kinds, only: wp, pi
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
+   ! 16-point Gauss-Legendre on [0, 1] for the identity quadratures (the library's one
+   ! literal table; test/docs/test_md_gauss_rules.py checks it against numpy)
+   use wa_quadrature, only: gx => gl16_x, gw => gl16_w
    implicit none
    private
 
@@ -14,25 +17,6 @@ module test_separation
    !> SPEC section 8: relative 1e-12, absolute 1e-12 where |value| < 1e-3.
    real(wp), parameter :: rtol = 1.0e-12_wp, abs_below = 1.0e-3_wp
 
-   !> 16-point Gauss-Legendre on [0, 1] (for the identity quadratures)
-   real(wp), parameter :: gx(16) = [ &
-      0.005299532504175033701923_wp, 0.02771248846338371196101_wp, &
-      0.06718439880608412805977_wp, 0.1222977958224984867434_wp, &
-      0.1910618777986781147139_wp, 0.2709916111713863151807_wp, &
-      0.3591982246103705422868_wp, 0.4524937450811812866824_wp, &
-      0.5475062549188187133176_wp, 0.6408017753896294577132_wp, &
-      0.7290083888286136848193_wp, 0.8089381222013218852861_wp, &
-      0.8777022041775015132566_wp, 0.9328156011939158719402_wp, &
-      0.972287511536616288039_wp, 0.9947004674958249662981_wp]
-   real(wp), parameter :: gw(16) = [ &
-      0.01357622970587704742589_wp, 0.03112676196932394643142_wp, &
-      0.04757925584124639240497_wp, 0.06231448562776693602624_wp, &
-      0.07479799440828836604818_wp, 0.08457825969750126909095_wp, &
-      0.09130170752246179306009_wp, 0.09472530522753424814233_wp, &
-      0.09472530522753424814233_wp, 0.09130170752246179306009_wp, &
-      0.08457825969750126909095_wp, 0.07479799440828836604818_wp, &
-      0.06231448562776693602624_wp, 0.04757925584124639240497_wp, &
-      0.03112676196932394643142_wp, 0.01357622970587704742589_wp]
 
 contains
 

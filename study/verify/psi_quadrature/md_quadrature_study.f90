@@ -10,7 +10,7 @@
 !> whatever it returned). GSL refuses epsrel < 50 eps = 1.1e-14 (epsabs = 0).
 !> All methods integrate K = int_0^1 artanh(r) r G(r) dr,
 !> G = 1/((1 - k^2 r^2) sqrt(1 - sin^2 s r^2)), Psi_c = -(2/pi) A q sin^2 s K:
-!>   lib      the library's fixed graded Gauss rules (md_psi_c, src/wa_md.f90; the time
+!>   lib      the library's fixed graded Gauss rules (md_psi_c, src/wa_md_psi.f90; the time
 !>            includes forming T, sin s, k from (a*, gap), about 0.1 us)
 !>   gauss-N  one Gauss rule for the weight -ln(1-r) (N nodes) for -(1/2)ln(1-r) r G, plus
 !>            N-point Gauss-Legendre for (1/2) ln(1+r) r G: singularity subtraction only
