@@ -1,4 +1,4 @@
-!> Benchmark of the SPEC section 9 targets. Prints figures; asserts nothing.
+!> Benchmark of the performance targets (doc/accuracy-performance.md). Prints figures; asserts nothing.
 !>   fpm run --profile release --example wavyadhesion-benchmark
 program benchmark
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
@@ -16,7 +16,7 @@ program benchmark
       case ("--help", "-h")
          write (*, '(a)') "usage: wavyadhesion-benchmark [--help | --version | SECTION...]", &
             "Times DW and MD points, branches, critical forces, gap control and the adhesion", &
-            "map against the SPEC 9 and issue targets (single core, medians over repeats) and", &
+            "map against the performance targets (single core, medians over repeats) and", &
             "prints the figures. SECTION (default all): point branch grid critical gap map gapmap."
          stop
       case ("--version")
@@ -33,7 +33,7 @@ program benchmark
    end do
 
    write (*, '(a)') "wavyadhesion "//wa_version//" benchmark (one core; medians over repeats)"
-   write (*, '(a)') "target (SPEC 9): DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"
+   write (*, '(a)') "performance target: DW point <= 2 us, MD point <= 20 us, DW branch <= 2 ms,"
    write (*, '(a)') "                 MD branch <= 20 ms, critical forces 3 alpha x 200 mu (DW) <= 1 s"
    write (*, '(a)') "target (issue 13): adhesion map 200 alpha, DW <= 2 s, MD <= 20 s"
    write (*, '(a)') "target (issue 11): gap path <= 2x load path; gap law 401 rows DW <= 5 ms, MD <= 30 ms"

@@ -56,11 +56,18 @@ contains
 
    !> Trace the equilibrium branch of `model` for `params` from a* -> 0 to a* = 1/2.
    subroutine trace_branch(model, params, branch, status, errmsg, options)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The traced branch: its points in the order of the curve, with their events
       type(branch_type), intent(out) :: branch
+      !> wa_ok; wa_invalid_argument for bad input; wa_not_converged or wa_numerical_error
+      !> where the curve leaves what double precision resolves (never a wrong branch)
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> The continuation's controls (trace_options); default: the library's
       type(trace_options), intent(in), optional :: options
       type(trace_options) :: opts
 
@@ -507,8 +514,8 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type), intent(inout) :: branch
-      !> turn_pushed: the fold is pushed (or none found); turn_at_switch: P* turns within
-      !> round-off of the switch, no fold is pushed
+      !> Either turn_pushed (the fold is pushed, or none is found) or turn_at_switch (P*
+      !> turns within round-off of the switch: no fold is pushed)
       integer, intent(out) :: turn_at
       type(state_type) :: s, s_hint
       type(curve_point) :: f

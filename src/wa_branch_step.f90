@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> One step of the pseudo-arclength continuation on the case-1 curve F(a*, y) = 0 (wa_curve)
 !> in the scaled plane z = (a*, w y), and the location of the events within a step. A point
 !> carries its unit tangent, dP*/dsigma and the stability determinant; the corrector is

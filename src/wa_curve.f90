@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The case-1 equilibrium curve of each cohesive model as the zero set of one residual
 !> F(a*, y) in the model's zone variable y, for the continuation driver (wa_branch).
 !>   DW: y = ln((C - A)/(1 - A)), y_max = 0 (c* = 1/2), F = dw_residual   (2.25b)

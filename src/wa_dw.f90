@@ -63,12 +63,20 @@ contains
    !> options: the numerical choices (dw_options; default: the library's); n_residuals:
    !> the number of residual evaluations (each one W) it took.
    pure subroutine dw_equilibrium(params, a_star, state, status, errmsg, options, n_residuals)
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2]
       real(wp), intent(in) :: a_star
+      !> The principal state (zone case 1, 2, or 3 at a* = 1/2)
       type(state_type), intent(out) :: state
+      !> wa_ok; wa_invalid_argument for bad input; wa_not_converged or wa_numerical_error
+      !> where the root cannot be resolved in double precision
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> The numerical choices (dw_options); default: the library's
       type(dw_options), intent(in), optional :: options
+      !> Receives the number of residual evaluations (each one W) the solve took
       integer, intent(out), optional :: n_residuals
       type(dw_options) :: opts
       type(contact_geometry) :: geo
@@ -124,11 +132,18 @@ contains
    !> (2.28b) holds. n_roots is the total; if it exceeds size(states), the first ones
    !> are stored and status = wa_capacity_too_small.
    pure subroutine dw_roots(params, a_star, states, n_roots, status, errmsg)
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2]
       real(wp), intent(in) :: a_star
+      !> Receives the states: case-1 roots by increasing c*, then case 2
       type(state_type), intent(inout) :: states(:)
+      !> Number of equilibria found (may exceed size(states))
       integer, intent(out) :: n_roots
+      !> wa_ok; wa_capacity_too_small when n_roots > size(states); wa_invalid_argument for
+      !> bad input; wa_numerical_error where a root cannot be resolved
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: found(scan_points)
       real(wp) :: u(scan_points), g(scan_points), s, g_top
@@ -193,8 +208,11 @@ contains
    !>   (1+lambda) p_W(a) - lambda p_W(c), p_W(a) = 2 cos(pi x) sqrt(A^2 - sin^2(pi x))
    !>   (2.3a), (2.10); 0 where the surfaces are apart and out of range.
    elemental function dw_traction(params, state, x_star) result(p)
+      !> The parameters the state was solved with
       type(params_type), intent(in) :: params
+      !> A state solved by dw_equilibrium or dw_roots for the same params
       type(state_type), intent(in) :: state
+      !> Position over the period, x* = x/L (any real: period 1, crest at 0)
       real(wp), intent(in) :: x_star
       real(wp) :: p
       real(wp) :: a, c, lambda, xr, s, cx
@@ -212,8 +230,11 @@ contains
    !> h_W(a) = 2 [S sqrt(S^2-A^2) - A^2 ln((S+sqrt(S^2-A^2))/A)] (corrected (2.16),
    !> doc/theory.md); zero inside the contact.
    elemental function dw_gap(params, state, x_star) result(h)
+      !> The parameters the state was solved with
       type(params_type), intent(in) :: params
+      !> A state solved by dw_equilibrium or dw_roots for the same params
       type(state_type), intent(in) :: state
+      !> Position over the period, x* = x/L (any real: period 1, crest at 0)
       real(wp), intent(in) :: x_star
       real(wp) :: h
       real(wp) :: a, c, lambda, s

@@ -1,5 +1,7 @@
+!> display: none
+!>
 !> The two elliptic integrals of the double-Westergaard model, (2.25b) and (2.28c) of
-!> MODEL-NOTES.md, in closed form, and a quadrature of the first for cross-checks.
+!> the paper (doc/theory.md, "Double-Westergaard"), in closed form, and a quadrature of the first for cross-checks.
 !>
 !>    I*(A,C) = int_A^C sqrt(1-X^2) sqrt(C^2-X^2) sqrt(X^2-A^2) dX,   0 < A <= C <= 1
 !>    I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX = I*(A,1)
@@ -73,7 +75,7 @@ module wa_elliptic
 
 contains
 
-   !> W = I*(A,C)/(C^2-A^2)^2, (2.25b) of MODEL-NOTES.md scaled to O(1), from accurate
+   !> W = I*(A,C)/(C^2-A^2)^2, (2.25b) of the paper (doc/theory.md) scaled to O(1), from accurate
    !> inputs: a = A >= 1e-150, c = C in [A, 1], d2 = C^2-A^2 >= 0, omc2 = 1-C^2 >= 0 (may be
    !> 0), d2 + omc2 = 1-A^2 > 0. At d2 = 0 it returns the limit pi sqrt(1-A^2)/(16A).
    !> For 0 <= A < 1e-150 it returns W(0,C) (istar_scaled_a0), which needs C >= 1e-100.
@@ -137,7 +139,7 @@ contains
       end if
    end function istar_scaled_a0
 
-   !> I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX, (2.28c) of MODEL-NOTES.md, in closed
+   !> I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX, (2.28c) of the paper (doc/theory.md), in closed
    !> form from a = A in [0,1] and oma2 = 1-A^2 given accurately. It vanishes like
    !> (2/15)(1-A^2)^(5/2) as A -> 1 and tends to 1/4 as A -> 0. Where A^2 >= 1/2 only oma2
    !> is used, elsewhere only a. NaN for invalid input.

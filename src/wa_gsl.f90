@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Raw `bind(C)` interfaces to the parts of GSL the library uses. Not re-exported.
 !>
 !> The `_e` variants return a GSL status instead of calling the error handler on

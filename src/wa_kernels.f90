@@ -1,6 +1,6 @@
 !> Closed forms that need no solve: Westergaard and JKR loads, and the Westergaard
 !> pressure, surface displacement and gap over a period. Everything is dimensionless
-!> (MODEL-NOTES.md): x* = x/L, pressures by p* = pi E* Delta / L, lengths by Delta.
+!> (doc/theory.md, "Westergaard and JKR"): x* = x/L, pressures by p* = pi E* Delta / L, lengths by Delta.
 !> Outside the domain 0 <= a* <= 1/2 (or NaN input) these elemental functions return NaN:
 !> they have no status argument; the equilibrium solvers validate and report instead.
 module wa_kernels
@@ -23,6 +23,7 @@ contains
 
    !> Westergaard load P* = sin^2(pi a*)   (2.4), (3.1)
    elemental function westergaard_load(a_star) result(p)
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
       real(wp), intent(in) :: a_star
       real(wp) :: p
       if (.not. in_half_period(a_star)) then
@@ -35,7 +36,10 @@ contains
    !> JKR load (Johnson 1995) P* = sin^2(pi a*) - alpha sqrt(tan(pi a*))   (2.26a), (3.4)
    !> At a* = 1/2 it is -Infinity (full contact never releases).
    elemental function jkr_load(alpha, a_star) result(p)
-      real(wp), intent(in) :: alpha, a_star
+      !> Johnson's parameter alpha (dimensionless, (2.21)), >= 0
+      real(wp), intent(in) :: alpha
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
+      real(wp), intent(in) :: a_star
       real(wp) :: p
       if (.not. in_half_period(a_star) .or. .not. (alpha >= 0.0_wp) .or. alpha > huge(alpha)) then
          p = ieee_value(p, ieee_quiet_nan)
@@ -58,7 +62,10 @@ contains
    !> Westergaard contact pressure p/p* = 2 cos(pi x*) sqrt(A^2 - sin^2(pi x*)) for
    !> |x*| <= a* (periodic in x* with period 1), zero elsewhere   (2.3a)
    elemental function westergaard_pressure(a_star, x_star) result(p)
-      real(wp), intent(in) :: a_star, x_star
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
+      real(wp), intent(in) :: a_star
+      !> Position over the period, x* = x/L (any real: period 1, crest at 0)
+      real(wp), intent(in) :: x_star
       real(wp) :: p
       real(wp) :: xr, s, a
       if (.not. in_half_period(a_star) .or. x_star /= x_star) then
@@ -82,7 +89,10 @@ contains
    !>   cos(2 pi x*) - 1                                        for |x*| <= a*
    !>   cos(2 pi x*) - 1 + 2 S sqrt(S^2-A^2) - 2 A^2 ln((S + sqrt(S^2-A^2))/A)  beyond
    elemental function westergaard_displacement(a_star, x_star) result(u)
-      real(wp), intent(in) :: a_star, x_star
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
+      real(wp), intent(in) :: a_star
+      !> Position over the period, x* = x/L (any real: period 1, crest at 0)
+      real(wp), intent(in) :: x_star
       real(wp) :: u
       real(wp) :: xr
       if (.not. in_half_period(a_star) .or. x_star /= x_star) then
@@ -96,7 +106,10 @@ contains
    !> Gap between the surfaces, h/Delta, zero in the contact   (2.15a) with (2.6)
    !>   h/Delta = 2 [S sqrt(S^2-A^2) - A^2 ln((S + sqrt(S^2-A^2))/A)],  S = sin(pi x*) >= A
    elemental function westergaard_gap(a_star, x_star) result(h)
-      real(wp), intent(in) :: a_star, x_star
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
+      real(wp), intent(in) :: a_star
+      !> Position over the period, x* = x/L (any real: period 1, crest at 0)
+      real(wp), intent(in) :: x_star
       real(wp) :: h, t, xr
       if (.not. in_half_period(a_star) .or. x_star /= x_star) then
          h = ieee_value(h, ieee_quiet_nan)

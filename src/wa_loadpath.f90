@@ -1,5 +1,5 @@
 !> Load-controlled loading and unloading along a traced branch, and the critical forces
-!> P_fc* (full contact reached) and P_pf* (pull-off), exactly as MODEL-NOTES.md defines
+!> P_fc* (full contact reached) and P_pf* (pull-off), exactly as doc/theory.md ("Load paths and critical forces") defines
 !> them. Between consecutive extrema of P* the branch is monotone, so a jump at constant
 !> load lands on the nearest stable piece that spans that load; the landing point is
 !> then solved to full precision.
@@ -58,7 +58,7 @@ module wa_loadpath
       logical :: fc_by_jump = .false., pf_by_jump = .false.
       !> How full contact is reached / contact is lost (mechanism_* codes)
       integer :: fc_mechanism = 0, pf_mechanism = 0
-      !> Area of the P*-a* hysteresis loop (not an energy: see MODEL-NOTES.md)
+      !> Area of the P*-a* hysteresis loop (not an energy: doc/theory.md, "Separation: gap, mean gap, displacement control, energy")
       real(wp) :: loop_area = 0.0_wp
    end type path_type
 
@@ -74,10 +74,16 @@ contains
 
    !> Trace the branch, then follow loading and unloading on it.
    subroutine load_path(model, params, path, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The loading-unloading cycle: its events, P_fc*, P_pf*, their mechanisms, loop area
       type(path_type), intent(out) :: path
+      !> wa_ok; wa_invalid_argument for bad input; else the status of the failing trace or
+      !> jump
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
       call trace_branch(model, params, branch, status, errmsg)
@@ -87,10 +93,18 @@ contains
 
    !> P_fc* and P_pf* only (the loop area is not computed).
    subroutine critical_forces(model, params, p_fc, p_pf, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
-      real(wp), intent(out) :: p_fc, p_pf
+      !> The full-contact load P_fc* (over p*): where loading first reaches full contact
+      real(wp), intent(out) :: p_fc
+      !> The pull-off load P_pf* (over p*, <= 0): where unloading loses contact
+      real(wp), intent(out) :: p_pf
+      !> wa_ok; wa_invalid_argument for bad input; else the status of the failing trace or
+      !> jump
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(path_type) :: path
       call load_path(model, params, path, status, errmsg)
@@ -103,12 +117,20 @@ contains
    !> solving the landing points or P*(a* -> 0) (events at the traced points; p_fc, p_pf
    !> and the loop area are then those of the traced points): what the adhesion map needs.
    subroutine path_from_branch(model, params, branch, path, status, errmsg, mechanisms_only)
+      !> The model the branch was traced for
       integer, intent(in) :: model
+      !> The parameters the branch was traced with
       type(params_type), intent(in) :: params
+      !> A branch traced by trace_branch (status wa_ok)
       type(branch_type), intent(in) :: branch
+      !> The loading-unloading cycle: its events, P_fc*, P_pf*, their mechanisms, loop area
       type(path_type), intent(out) :: path
+      !> wa_ok, or the status of a landing point that cannot be solved
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> If true, only the mechanisms and which points jump (no landing points solved);
+      !> default false
       logical, intent(in), optional :: mechanisms_only
       type(polyline) :: loop
       logical :: solve
@@ -270,13 +292,27 @@ contains
    !> message ("" for rows that succeeded).
    subroutine critical_sweep(model, alpha, mu, p_fc, p_pf, fc_mechanism, pf_mechanism, &
          status, errmsg, row_status, row_errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
-      real(wp), intent(in) :: alpha, mu(:)
-      real(wp), intent(out) :: p_fc(:), p_pf(:)
-      integer, intent(out) :: fc_mechanism(:), pf_mechanism(:)
+      !> Johnson's parameter alpha of every row, in [alpha_min, alpha_max]
+      real(wp), intent(in) :: alpha
+      !> The mu of each row, 0 or in [mu_min, mu_max] (a bad one fails its row only)
+      real(wp), intent(in) :: mu(:)
+      !> P_fc* of each row (size(mu)); NaN where the row failed
+      real(wp), intent(out) :: p_fc(:)
+      !> P_pf* of each row (size(mu)); NaN where the row failed
+      real(wp), intent(out) :: p_pf(:)
+      !> Full-contact mechanism (mechanism_* code) of each row (size(mu)); -1 where it failed
+      integer, intent(out) :: fc_mechanism(:)
+      !> Pull-off mechanism (mechanism_* code) of each row (size(mu)); -1 where it failed
+      integer, intent(out) :: pf_mechanism(:)
+      !> wa_ok when every row succeeded, else the status of the first failing row
       integer, intent(out) :: status
+      !> Receives the first failing row's mu and reason, and the number of failing rows
       character(len=*), intent(inout), optional :: errmsg
+      !> Receives each row's own status (size(mu))
       integer, intent(out), optional :: row_status(:)
+      !> Receives each row's own message, "" where it succeeded (size(mu))
       character(len=*), intent(out), optional :: row_errmsg(:)
       type(params_type) :: params
       type(path_type) :: path
@@ -326,11 +362,24 @@ contains
    !> change (on success too) and mu_change its midpoint.
    subroutine mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, errmsg, &
          bracket)
-      integer, intent(in) :: model, which
-      real(wp), intent(in) :: alpha, mu_lo, mu_hi
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
+      integer, intent(in) :: model
+      !> Which mechanism: 1 how full contact is reached, 2 how contact is lost (pull-off)
+      integer, intent(in) :: which
+      !> Johnson's parameter alpha, in [alpha_min, alpha_max]
+      real(wp), intent(in) :: alpha
+      !> Lower end of the bracket in mu, 0 or in [mu_min, mu_max], below mu_hi
+      real(wp), intent(in) :: mu_lo
+      !> Upper end of the bracket in mu, in [mu_min, mu_max]
+      real(wp), intent(in) :: mu_hi
+      !> The mu where the mechanism changes (midpoint of the final bracket, 1e-10 relative)
       real(wp), intent(out) :: mu_change
+      !> wa_ok; wa_no_solution when the mechanisms at mu_lo and mu_hi agree;
+      !> wa_not_converged when the load paths fail inside the bracket; wa_invalid_argument
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> Receives the interval still known to hold the change (on success too)
       real(wp), intent(out), optional :: bracket(2)
       real(wp), parameter :: tries(7) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp]

@@ -55,13 +55,29 @@ contains
    !> that cannot be continued end with end_kind = map_end_failed, never with a wrong point.
    subroutine adhesion_map(model, alpha, mu_lo, mu_hi, n_mu, map, status, errmsg, scan_every, &
          control)
+      !> The model: model_dw or model_md (the others have no mechanism changes to map)
       integer, intent(in) :: model
-      real(wp), intent(in) :: alpha(:), mu_lo, mu_hi
+      !> Johnson's parameter alpha at every column of the map: 1 to map_n_alpha_max values,
+      !> strictly increasing, each in [alpha_min, alpha_max]
+      real(wp), intent(in) :: alpha(:)
+      !> Smallest mu of the map, in [mu_min, mu_max], below mu_hi
+      real(wp), intent(in) :: mu_lo
+      !> Largest mu of the map, in [mu_min, mu_max]
+      real(wp), intent(in) :: mu_hi
+      !> Number of log-spaced mu rows of the region grid, in [2, map_n_mu_max]; n_mu times
+      !> size(alpha) at most map_cells_max
       integer, intent(in) :: n_mu
+      !> The map: grids, region mechanisms, boundary curves and special points
       type(map_type), intent(out) :: map
+      !> wa_ok, or wa_invalid_argument for bad input (curves that cannot be continued end
+      !> with end_kind = map_end_failed instead)
       integer, intent(out) :: status
+      !> Receives the reason on failure: the argument and its valid range
       character(len=*), intent(inout), optional :: errmsg
-      integer, intent(in), optional :: scan_every, control
+      !> The coarse mu scan runs at every scan_every-th alpha (and the last); >= 1, default 20
+      integer, intent(in), optional :: scan_every
+      !> Which boundaries: map_control_load (default), map_control_gap or map_control_both
+      integer, intent(in), optional :: control
       integer :: every, j, na
 
       call check_input(model, alpha, mu_lo, mu_hi, n_mu, status, errmsg)

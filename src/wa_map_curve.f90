@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Following one boundary curve of the adhesion map over the alpha grid: each next point
 !> predicted by extrapolating the last three or four in (ln alpha, ln mu), bracketed by two
 !> probes and refined by a safeguarded secant on the indicator of the pair of mechanisms

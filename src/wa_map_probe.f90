@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> One point of the (alpha, mu) plane as the adhesion map sees it (a probe): the branch
 !> traced at (alpha, mu), its load path's mechanisms under load and/or gap control, and
 !> the smooth indicators whose zeros are the changes of mechanism (the difference of the

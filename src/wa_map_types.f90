@@ -78,12 +78,21 @@ contains
    !> The boundary code of a change of mechanism `which` (1 full contact, 2 pull-off)
    !> from mech_below to mech_above as mu grows.
    pure integer function boundary_code(which, mech_below, mech_above)
-      integer, intent(in) :: which, mech_below, mech_above
+      !> Which mechanism changes: 1 full contact, 2 pull-off (load control), 3 approach,
+      !> 4 retraction (gap control)
+      integer, intent(in) :: which
+      !> The mechanism just below the boundary in mu (mechanism_* codes for which 1, 2;
+      !> gap_mechanisms' codes for 3, 4), in 0..3
+      integer, intent(in) :: mech_below
+      !> The mechanism just above the boundary in mu (same codes), in 0..3
+      integer, intent(in) :: mech_above
       boundary_code = 100*which + 10*mech_below + mech_above
    end function boundary_code
 
    !> "full contact: gradual -> jump case 1" and the like, for a boundary code.
    pure function boundary_meaning(code) result(text)
+      !> A boundary code, 100*which + 10*mech_below + mech_above (boundary_code); any other
+      !> value gives "unknown"
       integer, intent(in) :: code
       character(len=:), allocatable :: text
       character(len=*), parameter :: names(0:3) = [character(len=11) :: "gradual", &
@@ -111,6 +120,7 @@ contains
 
    !> "pull-off: jump case 1 -> jump case 2 turns back in alpha" and the like.
    pure function special_meaning(point) result(text)
+      !> A special point of a map (map_type's points): its kind and boundary codes are read
       type(map_point), intent(in) :: point
       character(len=:), allocatable :: text
       select case (point%kind)

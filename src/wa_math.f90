@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Elementary functions Fortran lacks, written to keep full relative accuracy, and the
 !> small array helpers (an index sort) the library shares.
 module wa_math

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Where a mechanism (an integer code: how full contact is reached, how contact is lost)
 !> changes with mu, by bisection in reverse communication: the caller computes the
 !> mechanism at the mu this module asks for, so load control and gap control share the

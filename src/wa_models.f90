@@ -27,7 +27,7 @@ module wa_models
    !> most 48); internal callers size their buffers with it.
    integer, parameter, public :: max_model_roots = 48
 
-   !> model_state: a state at a* is identified by its c* to within this (absolute).
+   !> How close in c* (absolute) a state at a* must be to the c* that model_state asks for.
    real(wp), parameter, public :: state_c_tolerance = 1.0e-6_wp
 
 contains
@@ -51,7 +51,7 @@ contains
       end select
    end subroutine check_model
 
-   !> Principal equilibrium of `model` at a* (SPEC section 4): for DW and MD the
+   !> Principal equilibrium of `model` at a*: for DW and MD the
    !> case-1 state with the smallest c*, else the case-2 state.
    pure subroutine model_equilibrium(model, params, a_star, state, status, errmsg)
       !> Model constant (model_westergaard, model_jkr, model_dw, model_md)

@@ -1,5 +1,5 @@
 !> The two dimensionless parameters (alpha, mu) and what derives from them, with a
-!> validating constructor and the conversion from SI inputs (SPEC section 3).
+!> validating constructor and the conversion from SI inputs (doc/theory.md, "Parameters").
 module wa_params
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
    use wa_kinds, only: wp, pi
@@ -49,9 +49,16 @@ contains
    !> Validating constructor: alpha in [alpha_min, alpha_max], mu = 0 or in
    !> [mu_min, mu_max] (1e-12 <= alpha <= 1e12, mu = 0 or 1e-100 <= mu <= 1e100).
    pure subroutine new_params(alpha, mu, params, status, errmsg)
-      real(wp), intent(in) :: alpha, mu
+      !> Johnson's parameter alpha (dimensionless, (2.21)), in [alpha_min, alpha_max]
+      real(wp), intent(in) :: alpha
+      !> Transition parameter mu (dimensionless, (2.19)), 0 (the Westergaard limit) or in
+      !> [mu_min, mu_max]
+      real(wp), intent(in) :: mu
+      !> The parameters with Sigma0 and Dcod derived (default-initialised on failure)
       type(params_type), intent(out) :: params
+      !> wa_ok, or wa_invalid_argument when an input is outside its range
       integer, intent(out) :: status
+      !> Receives the reason on failure: the argument, its value and its valid range
       character(len=*), intent(inout), optional :: errmsg
       call check_range("alpha", alpha, alpha_min, alpha_max, "[1e-12, 1e12]", status, errmsg)
       if (status /= wa_ok) return
@@ -80,9 +87,19 @@ contains
 
    !> Reduced modulus 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2   (2.2b)
    pure subroutine reduced_modulus(e1, nu1, e2, nu2, estar, status, errmsg)
-      real(wp), intent(in) :: e1, nu1, e2, nu2
+      !> Young's modulus of the first body [Pa], in (0, inf)
+      real(wp), intent(in) :: e1
+      !> Poisson ratio of the first body, in (-1, 1/2]
+      real(wp), intent(in) :: nu1
+      !> Young's modulus of the second body [Pa], in (0, inf)
+      real(wp), intent(in) :: e2
+      !> Poisson ratio of the second body, in (-1, 1/2]
+      real(wp), intent(in) :: nu2
+      !> The reduced modulus E* [Pa] (0 on failure)
       real(wp), intent(out) :: estar
+      !> wa_ok, or wa_invalid_argument when an input is outside its range
       integer, intent(out) :: status
+      !> Receives the reason on failure: the argument, its value and its valid range
       character(len=*), intent(inout), optional :: errmsg
       estar = 0.0_wp
       call check_range("E1", e1, 0.0_wp, huge(1.0_wp), "(0, inf) Pa", status, errmsg, &
@@ -103,10 +120,23 @@ contains
    !> alpha = sqrt(2 dgamma L/(pi^2 E* Delta^2)), Sigma0 = sigma0/p*, mu from Sigma0.
    pure subroutine dimensional_params(estar, period, amplitude, work_of_adhesion, &
          peak_stress, params, scales, status, errmsg)
-      real(wp), intent(in) :: estar, period, amplitude, work_of_adhesion, peak_stress
+      !> Reduced modulus E* [Pa] (reduced_modulus), in (0, inf)
+      real(wp), intent(in) :: estar
+      !> Period L of the wavy surface [m], in (0, inf)
+      real(wp), intent(in) :: period
+      !> Amplitude Delta of the wave [m] (half the peak-to-valley height), in (0, inf)
+      real(wp), intent(in) :: amplitude
+      !> Work of adhesion dgamma [J/m^2], in (0, inf)
+      real(wp), intent(in) :: work_of_adhesion
+      !> Peak adhesive (Dugdale) stress sigma0 [Pa], in [0, inf); 0 gives mu = 0
+      real(wp), intent(in) :: peak_stress
+      !> The dimensionless parameters alpha, mu, Sigma0, Dcod
       type(params_type), intent(out) :: params
+      !> The SI scales (E*, p*, force per period, L, crest radius R) of the results
       type(scales_type), intent(out) :: scales
+      !> wa_ok, or wa_invalid_argument when an input or the alpha, mu it gives is out of range
       integer, intent(out) :: status
+      !> Receives the reason on failure: the argument, its value and its valid range
       character(len=*), intent(inout), optional :: errmsg
       real(wp), parameter :: big = huge(1.0_wp)
       real(wp) :: alpha, mu, pstar

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The alternative quadratures that the options of dw_equilibrium and md_equilibrium
 !> select in place of the library's closed form (DW's W = I*/(C^2-A^2)^2) and fixed graded
 !> Gauss rules (MD's Psi_c): what the work-precision study (doc/accuracy-performance.md)

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Bracketed scalar root finding by Brent's method in reverse communication: the
 !> caller evaluates the function, so no callbacks, closures or module state are
 !> needed and everything stays pure. Usage:

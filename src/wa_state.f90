@@ -4,12 +4,12 @@ module wa_state
    implicit none
    private
 
-   !> Zone cases (SPEC section 4): 1 a* < c* < 1/2, 2 a* < c* = 1/2, 3 full contact;
+   !> Zone cases (doc/theory.md, "Double-Westergaard"): 1 a* < c* < 1/2, 2 a* < c* = 1/2, 3 full contact;
    !> 0 no contact (MD only: a* = 0, a Dugdale zone |x*| < c* around the crest).
    integer, parameter, public :: zone_inside = 1, zone_whole_period = 2, zone_full_contact = 3
    integer, parameter, public :: zone_no_contact = 0
 
-   !> Models, named as in SPEC section 4 (values shared with the C header).
+   !> Model codes (values shared with the C header, include/wavyadhesion.h).
    integer, parameter, public :: model_westergaard = 0, model_jkr = 1, model_dw = 2, model_md = 3
 
    type, public :: state_type

@@ -24,6 +24,7 @@ contains
 
    !> Short, fixed description of a status code (never empty).
    pure function status_message(status) result(msg)
+      !> A status code (wa_ok ... wa_numerical_error); any other value gives "unknown status"
       integer, intent(in) :: status
       character(len=:), allocatable :: msg
       select case (status)

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Numbers as text for the library's messages (the library never prints: these build the
 !> message strings that every routine returns with its status).
 module wa_text

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Argument checks shared by every public entry point: each failure names the
 !> argument, its value and its valid range.
 module wa_validate

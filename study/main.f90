@@ -1,6 +1,6 @@
 !> wavyadhesion-study: error against run time of the library's numerical choices, the
 !> comparison with a straightforward scipy implementation, and the stiff/extreme grid
-!> (doc/accuracy-performance.md, SPEC sections 8-9). Prints tables; writes the data of
+!> (doc/accuracy-performance.md: the accuracy and performance targets). Prints tables; writes the data of
 !> the tables and plots into the output directory (default build/study).
 !>
 !>   fpm run --profile release --example wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
@@ -95,7 +95,7 @@ contains
 
    ! =============================================================== work-precision, DW
 
-   !> The case-1 points of test/data/dw.txt (SPEC 8's main grid, mpmath at 34 digits).
+   !> The case-1 points of test/data/dw.txt (the main range, mpmath at 34 digits).
    subroutine dw_points(pts)
       type(wp_point), allocatable, intent(out) :: pts(:)
       type(ref_table) :: t
@@ -242,7 +242,7 @@ contains
       character(len=:), allocatable :: path
       path = trim(out_dir)//"/wp_"//model//".txt"
       open (newunit=u, file=path, status="replace", action="write")
-      write (u, '(a,i0,a)') "# work-precision, ", npts, " points; err = SPEC 8 error (max of "// &
+      write (u, '(a,i0,a)') "# work-precision, ", npts, " points; err = target error (max of "// &
          "rel c*, rel P* or abs P* where |P*|<1e-3) vs mpmath; time per point [us], best pass"
       write (u, '(a)') "# method tol xtol library_call max_err median_err n_over_1e-12 "// &
          "n_fail time_us mean_residuals label worst_alpha worst_mu worst_a_star"
@@ -646,7 +646,7 @@ contains
          "status_principal err_principal residuals us_per_roots_call verdict"
       worst = 0
       n_bad = 0
-      write (*, '(a)') "   points that fail or exceed 1e-12 (SPEC 8 main range marked *):"
+      write (*, '(a)') "   points that fail or exceed 1e-12 (main range marked *):"
       do i = 1, ps%n
          call new_params(ps%alpha(i), ps%mu(i), params, st)
          nref = count(t%zone_case(ps%first(i):ps%last(i)) /= 0)

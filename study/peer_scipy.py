@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The peer a user would otherwise write: the double-Westergaard equilibrium at given a*
-straight from the paper's equations (MODEL-NOTES.md (2.22)-(2.28)) with scipy.integrate.quad
+straight from the paper's equations ((2.22)-(2.28), doc/theory.md) with scipy.integrate.quad
 and scipy.optimize.brentq, one point at a time. Used by wavyadhesion-study (study/main.f90),
 which times it in the same run as the library and computes its error against mpmath.
 

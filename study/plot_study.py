@@ -99,7 +99,7 @@ def main():
             ax.grid(True, which="major", lw=0.3)
             if row == 1:
                 ax.set_xlabel("time per equilibrium point [µs] (one core, best pass)")
-            ax.set_ylabel(("worst" if key == "max" else "median") + " error over the points (SPEC 8 measure)")
+            ax.set_ylabel(("worst" if key == "max" else "median") + " error over the points (accuracy-target measure)")
             n = {"dw": "DW: %d case-1 points of test/data/dw.txt" % npts,
                  "md": "MD: %d points of test/data/md.txt" % npts}[model]
             ax.set_title("%s — %s error" % (n, "worst" if key == "max" else "median"), fontsize=10)

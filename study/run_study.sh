@@ -23,7 +23,7 @@ python3 study/plot_study.py build/study doc/figures
 python3 study/summarize_check.py study/data/samples_check.txt | tee build/study/check_summary.txt
 # 6. Psi_c alone (error vs time per Psi_c, 64 cases; the MD module's own study)
 sh study/md_study.sh study | tee build/study/psi_c.txt
-# 7. the SPEC 9 benchmark, for the record
+# 7. the performance-target benchmark, for the record
 fpm run --profile release --example wavyadhesion-benchmark | tee build/study/benchmark.txt
 # Not run here (needs tamaas, ~25 min CPU): the boundary-element cross-check of the MD gap
 # law, doc/accuracy-performance.md section 10:

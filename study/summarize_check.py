@@ -4,7 +4,7 @@ traced branches, folds, case switches and critical forces against mpmath (50 dig
 
   python3 study/summarize_check.py [study/data/samples_check.txt]
 
-Per model and kind: number of entries, worst error in c* and P* (SPEC 8 measure: relative,
+Per model and kind: number of entries, worst error in c* and P* (the accuracy targets' measure: relative,
 P* absolute where |P*| < 1e-3) and in a* (fold and switch locations, absolute), then every
 entry worse than 1e-10 in P*/c* or 1e-10 in a*, and every entry the reference could not check.
 """

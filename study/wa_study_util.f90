@@ -1,5 +1,5 @@
 !> Small utilities of the accuracy/performance study: clock, medians, the error measure
-!> of SPEC section 8, and the reader of the mpmath reference tables (test/data/*.txt,
+!> of the accuracy targets (doc/accuracy-performance.md), and the reader of the mpmath reference tables (test/data/*.txt,
 !> study/data/*.txt: alpha mu a_star c_star gap P_star zone_case).
 module wa_study_util
    use, intrinsic :: iso_fortran_env, only: int64
@@ -63,7 +63,7 @@ contains
       end do
    end subroutine sort_real
 
-   !> SPEC section 8's error of a state: the larger of the relative error in c* and the
+   !> The accuracy targets' error of a state: the larger of the relative error in c* and the
    !> error in P* (relative, absolute where |P*_ref| < 1e-3). NaN counts as huge.
    elemental real(wp) function spec_error(c, p, c_ref, p_ref) result(e)
       real(wp), intent(in) :: c, p, c_ref, p_ref

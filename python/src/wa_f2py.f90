@@ -1,7 +1,7 @@
 !> Flat f2py facade of the wavyadhesion library (compiled into the extension module
 !> `wavyadhesion._wa_f2py`; the Python layer in wavyadhesion/_core.py is the public face).
 !>
-!> f2py rules kept here (STYLE.md): external subroutines only (no module procedures, no
+!> f2py rules kept here: external subroutines only (no module procedures, no
 !> `value`), kinds from iso_c_binding in every signature (a kind imported from our own
 !> modules would be mapped to C float), explicit-shape arrays sized by leading
 !> arguments, and `status` plus `character(len=256) :: message` last. Each call loops
@@ -343,7 +343,7 @@ subroutine fa_reduced_modulus(e1, nu1, e2, nu2, estar, status, message)
    status = int(stat, c_int)
 end subroutine fa_reduced_modulus
 
-!> alpha, mu, Sigma0, Dcod and the SI scales from E*, L, Delta, dgamma, sigma0 (SPEC 3).
+!> alpha, mu, Sigma0, Dcod and the SI scales from E*, L, Delta, dgamma, sigma0 (doc/theory.md, "Parameters").
 subroutine fa_dimensional(estar, period, amplitude, work_of_adhesion, peak_stress, alpha, &
       mu, sigma0, dcod, pressure, force, length, radius, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double

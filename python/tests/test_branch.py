@@ -40,7 +40,7 @@ def test_dw_paper_case_events():
                                           "branch_end"]
     assert np.count_nonzero(b.event == 1) == 2
     f1, f2 = b.folds
-    # folds are located to 1e-10 in a* (SPEC 8); P* is flat there
+    # folds are located to 1e-10 in a* (the accuracy target, doc/accuracy-performance.md); P* is flat there
     np.testing.assert_allclose([f1.a_star, f2.a_star],
                                [5.3308276396925647e-02, 3.7313491247966202e-01], rtol=1e-9)
     np.testing.assert_allclose([f1.P_star, f2.P_star],

@@ -1,4 +1,4 @@
-"""Params: derived quantities and the dimensional round trip (SPEC section 3)."""
+"""Params: derived quantities and the dimensional round trip (doc/theory.md, "Parameters")."""
 
 import math
 

@@ -1,5 +1,5 @@
 """Agreement with the repository's mpmath reference tables test/data/*.txt (skipped when
-a table is absent). Tolerances of SPEC section 8: relative 1e-12 in c* and P*, absolute
+a table is absent). Tolerances of the accuracy target (doc/accuracy-performance.md): relative 1e-12 in c* and P*, absolute
 1e-12 where |P*| < 1e-3."""
 
 from itertools import groupby

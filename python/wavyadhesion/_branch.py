@@ -17,7 +17,7 @@ from ._results import ResultMixin
 # would cost ~0.5 ms per call in array set-up (1.55 vs 1.03 ms for a DW branch).
 _BRANCH_CAPACITY = 4096
 
-#: Event codes of branch points and load-path events (SPEC section 7, include/wavyadhesion.h).
+#: Event codes of branch points and load-path events (include/wavyadhesion.h, doc/user-guide.md).
 EVENTS = {
     0: "none",
     1: "fold",

@@ -189,7 +189,7 @@ class CriticalForces(ResultMixin):
 
 
 def load_path(model: str, alpha: float, mu: float) -> LoadPath:
-    """Load-controlled loading and unloading along the branch (MODEL-NOTES.md).
+    """Load-controlled loading and unloading along the branch (doc/theory.md, "Load paths and critical forces").
 
     Loading starts from separation at P* = 0 (jump-in), rises along stable pieces and
     jumps at every maximum of P* until full contact (load P_fc); unloading leaves full

@@ -2,7 +2,7 @@
 """Reference values of the double-Westergaard elliptic integrals (mpmath only).
 
     W(A,C) = I*(A,C)/(C^2-A^2)^2,   I*(A,C) = int_A^C sqrt(1-X^2) sqrt(C^2-X^2) sqrt(X^2-A^2) dX
-    I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX                      (2.25b), (2.28c), MODEL-NOTES.md
+    I_A*(A) = int_A^1 (1-X^2) sqrt(X^2-A^2) dX                      (2.25b), (2.28c), doc/theory.md
 
 The Fortran routine istar_scaled(a, c, d2, omc2) takes the four doubles A, C, C^2-A^2, 1-C^2.
 Each reference below is W for exactly those four doubles, i.e. (E1) of src/wa_elliptic.f90,

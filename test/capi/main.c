@@ -405,7 +405,7 @@ static void test_branch_dw_values(void) {
          count_events(&b, WA_EVENT_FOLD), count_events(&b, WA_EVENT_SWITCH));
    for (i = 0; i < b.n; i++) {
       if (b.e[i] == WA_EVENT_FOLD && k < 2) {
-         CHECK(close_to(b.a[i], fold_a[k], 1e-10) && close_to(b.p[i], fold_p[k], 1e-12),  /* SPEC 8: folds to 1e-10 */
+         CHECK(close_to(b.a[i], fold_a[k], 1e-10) && close_to(b.p[i], fold_p[k], 1e-12),  /* folds to 1e-10 (accuracy target) */
                "dw fold %d: a* %.17g P* %.17g", k, b.a[i], b.p[i]);
          k++;
       }

@@ -1,4 +1,4 @@
-"""The command-line driver (SPEC section 7): columns, formats, errors, exit codes.
+"""The command-line driver (doc/user-guide.md, "Command line"): columns, formats, errors, exit codes.
 
 The executable is $WAVYADHESION_CLI, or the one fpm builds in the release profile.
 """

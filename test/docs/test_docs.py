@@ -12,7 +12,10 @@
    release `wavyadhesion` first on PATH and .venv/bin next); each must exit 0.
 3. The docs cite no file outside the repository and no build/gfortran_* directory, and
    `fpm test` names a suite only after `--`.
-4. The FORD API reference builds without warnings, with a*, P* not turned into emphasis.
+4. The FORD API reference builds without warnings, with a*, P* not turned into emphasis;
+   the umbrella's page lists every public name; internal modules are hidden and the
+   procedure list holds the public API only; every argument of a public routine is
+   documented; nothing in the tree cites a file outside the repository.
 5. One version everywhere: VERSION, `wavyadhesion --version`, Python __version__,
    CITATION.cff, CHANGELOG.md (the C `wa_version()` is checked by `fpm test capi`).
 """
@@ -182,9 +185,12 @@ def test_quoted_command_runs(doc, command, tmp_path):
     assert res.returncode == 0, f"{doc}: `{command}` exited {res.returncode}: {res.stderr[-2000:]}"
 
 
+# Files outside the repository that nothing in it may cite (their content belongs in
+# doc/theory.md, doc/user-guide.md, doc/accuracy-performance.md). Spelled in pieces so
+# that this file does not cite them itself.
+OUTSIDE = re.compile(r"\bSP" r"EC\b|MODEL" r"-NOTES|STYLE" r"\.md|\.\./sha" r"red|seed" r"-double")
 FORBIDDEN = [
-    (re.compile(r"SPEC\b"), "the SPEC is not in the repository"),
-    (re.compile(r"MODEL-NOTES|STYLE\.md|\.\./shared|seed-double"), "not in the repository"),
+    (OUTSIDE, "not in the repository"),
     (re.compile(r"build/gfortran_"), "use tools/install.sh (doc/using-the-library.md)"),
     (re.compile(r"fpm test(?: --profile \w+)? (?:unit|capi) (?!--)\w"),
      "fpm needs -- before a suite name: fpm test --profile release unit -- dw"),
@@ -243,6 +249,28 @@ def test_ford_builds_without_warnings():
         remote = re.findall(r'(?:href|src)="(https?://[^"]+)"', head)
         assert not remote, f"{page}: {remote}"
     assert (REPO / "doc" / "api" / "vendor" / "bootstrap.min.css").stat().st_size > 100_000
+    # The procedure and type lists hold the public API only (tools/ford_public.py), and
+    # every exported procedure is there; index.html's short lists likewise.
+    api = REPO / "doc" / "api"
+    names, renames, public_modules = umbrella()
+    exported = {renames.get(n, n) for n in names}
+    listed = re.findall(r"<td><a href='\.\./(proc|interface|type)/(\w+)\.html'>\w+</a></td>\s*"
+                        r"<td><a href='\.\./module/(\w+)\.html'>",
+                        (api / "lists" / "procedures.html").read_text()
+                        + (api / "lists" / "types.html").read_text())
+    assert {m for _, _, m in listed} <= public_modules, sorted({m for _, _, m in listed})
+    procs = {n for kind, n, _ in listed if kind != "type"}
+    assert procs == set(public_procedures()), sorted(procs ^ set(public_procedures()))
+    assert {n for kind, n, _ in listed if kind == "type"} <= exported
+    index = (api / "index.html").read_text()
+    shown = re.findall(r"<li><a href='(proc|type|module)/(\w+)\.html'>", index)
+    assert shown[0] == ("module", "wavyadhesion"), shown[:3]
+    assert all(n in exported or (k == "module" and n in public_modules | {"wavyadhesion"})
+               for k, n in shown), shown
+    # The umbrella's page links every name it lists.
+    page = (api / "module" / "wavyadhesion.html").read_text()
+    linked = set(re.findall(r'<a href="[^"]+">(\w+)</a>', page))
+    assert exported <= linked, sorted(exported - linked)
 
 
 def test_one_version_everywhere():
@@ -263,3 +291,203 @@ def test_readme_gives_two_commands():
     assert "    bash tools/setup.sh --run && .venv/bin/fpm run --profile release wavyadhesion\n" in readme
     assert "    bash tools/setup.sh && bash tools/test.sh\n" in readme
     assert shlex.split("bash tools/setup.sh && bash tools/test.sh")  # quoted by .ci/run
+
+
+# ---------------------------------------------------------------- the Fortran API reference
+SRC = REPO / "src"
+
+
+def fortran_statements(path):
+    """The source of a Fortran file, lower case, comments dropped, continuations joined."""
+    text = re.sub(r"!.*", "", path.read_text().lower())
+    return re.sub(r"&\s*\n\s*&?", " ", text)
+
+
+def umbrella():
+    """(exported names, {local name: name in its module}, modules re-exported from) of
+    src/wavyadhesion.f90."""
+    text = fortran_statements(SRC / "wavyadhesion.f90")
+    names = [n.strip() for stmt in re.findall(r"^\s*public\s*::(.*)$", text, re.M)
+             for n in stmt.split(",") if n.strip()]
+    renames, modules = {}, set()
+    for module, only in re.findall(r"^\s*use\s+(\w+)\s*,\s*only\s*:(.*)$", text, re.M):
+        modules.add(module)
+        for item in only.split(","):
+            local, _, original = item.partition("=>")
+            renames[local.strip()] = (original or local).strip()
+    assert len(names) == len(set(names)), "a name is made public twice"
+    return set(names), renames, modules
+
+
+def umbrella_api_section():
+    """The `## The public API` part of the umbrella's module doc comment."""
+    lines = (SRC / "wavyadhesion.f90").read_text().split("\nmodule wavyadhesion", 1)[0]
+    doc = "\n".join(line[2:] for line in lines.splitlines() if line.startswith("!>"))
+    assert "## The public API" in doc
+    return doc.split("## The public API", 1)[1]
+
+
+def test_umbrella_page_lists_every_public_name():
+    """The umbrella's doc comment (FORD's page of module wavyadhesion) links every name the
+    module exports, once, and nothing else; FORD resolves the links (tools/ford.sh fails on
+    an unresolved one)."""
+    names, renames, _ = umbrella()
+    section = umbrella_api_section()
+    linked = re.findall(r"\[\[(?:\w+:)?(\w+)\]\]", section)
+    assert len(linked) == len(set(linked)), sorted(n for n in linked if linked.count(n) > 1)
+    listed = set(linked)
+    exported = {renames.get(n, n) for n in names}
+    assert listed == exported, (f"exported but not listed: {sorted(exported - listed)}; "
+                                f"listed but not exported: {sorted(listed - exported)}")
+    # each group of the page is one of the library's layers
+    groups = re.findall(r"^\s*### (.+)$", section, re.M)
+    assert [g.split(" (")[0] for g in groups] == [
+        "Parameters", "Kernels", "Models", "Separation", "Branch", "Load control",
+        "Gap control", "Adhesion map", "Status and version"], groups
+
+
+def module_doc(path):
+    """(module name, its doc comment lines) of a src/*.f90 file."""
+    lines = path.read_text().splitlines()
+    for i, line in enumerate(lines):
+        m = re.match(r"\s*module\s+(\w+)\s*$", line, re.I)
+        if m:
+            j = i
+            while j > 0 and lines[j - 1].lstrip().startswith("!>"):
+                j -= 1
+            return m.group(1).lower(), [s.strip()[2:].strip() for s in lines[j:i]]
+    return None, []
+
+
+# TODO(lead): src/wa_capi.f90 is edited in another branch; after merging, give its module
+# doc comment the first lines "!> display: none" and "!>" and empty this set.
+HIDDEN_TODO = {"wa_capi"}
+
+
+def test_internal_modules_are_hidden():
+    """A module the umbrella re-exports nothing from is internal: its doc comment starts
+    with FORD's `display: none` (the module page stays, its procedures and types are not
+    documented); a module it re-exports from must not carry it."""
+    _, _, public = umbrella()
+    wrong = []
+    for path in sorted(SRC.glob("*.f90")):
+        name, doc = module_doc(path)
+        if name is None or name == "wavyadhesion":
+            continue
+        hidden = doc[:2] == ["display: none", ""]
+        if (name in public) == hidden and name not in HIDDEN_TODO:
+            wrong.append(f"{name}: {'hidden but re-exported' if hidden else 'internal, not hidden'}")
+    assert not wrong, wrong
+
+
+PROC_HEAD = re.compile(r"^\s*(?:(?:pure|elemental|impure|recursive|module)\s+|"
+                       r"(?:real|integer|logical|complex|character|type)\s*(?:\([^)]*\))?\s+)*"
+                       r"(?:function|subroutine)\s+(\w+)\s*(?:\(([^)]*)\))?", re.I)
+
+
+def joined(lines, i):
+    """Line i with its continuation lines (comments dropped), and the index of its last line."""
+    text = lines[i].split("!")[0].rstrip()
+    while text.endswith("&"):
+        i += 1
+        text = text[:-1] + " " + lines[i].split("!")[0].strip().lstrip("&")
+    return text, i
+
+
+def procedure_arguments(path):
+    """{procedure: [(argument, its doc lines)]} for every procedure of a Fortran file: the
+    `!>` lines right above the declaration of each dummy argument (or a `!!` after it)."""
+    lines = path.read_text().splitlines()
+    found, i = {}, 0
+    while i < len(lines):
+        head, last = joined(lines, i)
+        m = None if re.match(r"\s*end\b", head, re.I) else PROC_HEAD.match(head)
+        if not m:
+            i += 1
+            continue
+        args = [a.strip().lower() for a in (m.group(2) or "").split(",") if a.strip()]
+        docs = {}
+        k = last + 1
+        while k < len(lines) and not re.match(r"\s*(end\s*(function|subroutine)|contains)\b",
+                                              lines[k], re.I):
+            decl, end = joined(lines, k)
+            dm = re.match(r"[^!]*?::(.*)$", decl)
+            if dm:
+                above, p = [], k - 1
+                while p >= 0 and lines[p].lstrip().startswith("!>"):
+                    above.insert(0, lines[p].strip()[2:].strip())
+                    p -= 1
+                if "!!" in lines[end]:
+                    above.append(lines[end].split("!!", 1)[1].strip())
+                for entity in re.split(r",(?![^()]*\))", dm.group(1)):
+                    n = re.match(r"\s*(\w+)", entity)
+                    if n and n.group(1).lower() in args:
+                        docs.setdefault(n.group(1).lower(), [s for s in above if s])
+            k = end + 1
+        found[m.group(1).lower()] = [(a, docs.get(a, [])) for a in args]
+        i = last + 1
+    return found
+
+
+def public_procedures():
+    """{procedure the umbrella exports: (file name, [(argument, doc lines)])}."""
+    names, renames, _ = umbrella()
+    exported = {renames.get(n, n) for n in names}
+    procs = {}
+    for path in sorted(SRC.glob("*.f90")):
+        for name, args in procedure_arguments(path).items():
+            if name in exported:
+                procs[name] = (path.name, args)
+    return procs
+
+
+# TODO(lead): these files are edited in other branches; after merging, document every
+# argument of their exported routines (as in src/wa_loadpath.f90) and empty this set.
+UNDOCUMENTED_TODO = {"wa_gappath.f90", "wa_gapcritical.f90", "wa_gapmech.f90", "wa_md.f90",
+                     "wa_separation.f90"}
+
+
+def test_public_arguments_documented():
+    """Every dummy argument of every routine `use wavyadhesion` exports has a `!>` doc
+    comment (FORD shows it on the routine's page)."""
+    procs = public_procedures()
+    assert len(procs) >= 50, sorted(procs)
+    missing = [f"{file}: {proc}({arg})" for proc, (file, args) in sorted(procs.items())
+               for arg, doc in args if not doc and file not in UNDOCUMENTED_TODO]
+    assert not missing, missing
+    n_args = sum(len(args) for _, args in procs.values())
+    assert n_args > 250, n_args
+
+
+def test_procedure_parser_sees_missing_docs(tmp_path):
+    src = tmp_path / "m.f90"
+    src.write_text("module m\ncontains\n   !> f\n   pure subroutine f(a, b, &\n         c)\n"
+                   "      !> the a\n      real, intent(in) :: a\n      real, intent(in) :: b\n"
+                   "      real, intent(out) :: c !! the c\n   end subroutine f\nend module m\n")
+    assert procedure_arguments(src) == {"f": [("a", ["the a"]), ("b", []), ("c", ["the c"])]}
+
+
+# Trees where nothing may cite a file outside the repository.
+CITING_TREES = ["src", "app", "python", "include", "doc", "README.md", "test", "study", "tools",
+                "benchmark"]
+# TODO(lead): these files are edited in other branches; after merging, replace their
+# citations of the product spec (its section 5 -> doc/c-api.md; its section 7 ->
+# doc/user-guide.md, "Command line") and empty this set.
+CITING_TODO = {"src/wa_capi.f90", "app/main.f90", "app/wa_cli_options.f90",
+               "app/wa_cli_table.f90"}
+
+
+def test_no_citation_of_files_outside_the_repository():
+    files = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard",
+                            "--", *CITING_TREES], cwd=REPO, check=True, capture_output=True,
+                           text=True).stdout.split()
+    assert len(files) > 100
+    bad = []
+    for rel in files:
+        path = REPO / rel
+        if rel in CITING_TODO or rel.startswith(("doc/api/", "build/")) or not path.is_file():
+            continue
+        text = path.read_bytes().decode("utf-8", errors="replace")
+        bad += [f"{rel}:{text.count(chr(10), 0, m.start()) + 1}: {m.group(0)}"
+                for m in OUTSIDE.finditer(text)]
+    assert not bad, bad

@@ -251,7 +251,7 @@ contains
       end do
    end subroutine test_md_points
 
-   !> MD alpha 0.3, mu 1 (MODEL-NOTES: the curve folds back in a*): a* decreases somewhere
+   !> MD alpha 0.3, mu 1 (doc/theory.md, "Continuation": the curve folds back in a*): a* decreases somewhere
    !> along the case-1 curve, which ends on c* = 1/2 at a corner minimum.
    subroutine test_md_shape(error)
       type(error_type), allocatable, intent(out) :: error

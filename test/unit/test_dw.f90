@@ -174,7 +174,7 @@ contains
       end do
    end subroutine test_invalid
 
-   !> SPEC section 8's extended range: a finite answer or a status, never NaN.
+   !> The extended range (doc/theory.md, "Supported range"): a finite answer or a status, never NaN.
    subroutine test_no_nan(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: alphas(7) = [1.0e-4_wp, 1.0e-3_wp, 0.01_wp, 0.3_wp, 1.0_wp, 3.0_wp, 10.0_wp]

@@ -160,7 +160,7 @@ contains
 
    !> DW over alpha 0.3..1 (60 log values): full contact gradual -> jump case 1 (101)
    !> meets gradual -> snap (103) where the local maximum of P* reaches 0, alpha 0.5699
-   !> for large mu (MODEL-NOTES: (3/4)^(3/4)/sqrt(2)); here at mu ~ 2.95, alpha within 1 %
+   !> for large mu (the JKR limit (3/4)^(3/4)/sqrt(2)); here at mu ~ 2.95, alpha within 1 %
    !> of 0.567; the pull-off boundary 212 turns back in alpha into 221 near alpha 0.878.
    subroutine test_special(error)
       type(error_type), allocatable, intent(out) :: error

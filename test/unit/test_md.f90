@@ -18,7 +18,7 @@ module test_md
 
    !> Psi_c is summed by fixed Gauss rules: measured error <= 3.2e-15 (quadrature study).
    real(wp), parameter :: psi_tol = 1.0e-13_wp
-   !> SPEC section 8 for solved quantities.
+   !> the accuracy target (doc/accuracy-performance.md) for solved quantities.
    real(wp), parameter :: root_tol = 1.0e-12_wp
 
 contains

@@ -76,7 +76,7 @@ contains
    end subroutine test_invalid
 
    !> SI in, dimensionless out, and mu equals its dimensional form
-   !> 4 sigma0 (R/(pi^2 E*^2 dgamma))^(1/3) (corrected (2.19), MODEL-NOTES.md).
+   !> 4 sigma0 (R/(pi^2 E*^2 dgamma))^(1/3) (corrected (2.19), doc/theory.md "Parameters").
    subroutine test_dimensional(error)
       type(error_type), allocatable, intent(out) :: error
       type(params_type) :: p

@@ -1,5 +1,5 @@
 !> Agreement with the mpmath reference tables in test/data (tools/reference/make_reference.py):
-!> every state at every tabulated (alpha, mu, a*), c* and P* to SPEC section 8's tolerance.
+!> every state at every tabulated (alpha, mu, a*), c* and P* to the accuracy target's tolerance (doc/accuracy-performance.md).
 module test_reference
    use wavyadhesion
    use wa_kinds, only: wp
@@ -9,7 +9,7 @@ module test_reference
 
    public :: collect_reference, compare_table
 
-   !> SPEC section 8: relative 1e-12 in c* and P*, absolute 1e-12 where |P*| < 1e-3.
+   !> The accuracy target (doc/accuracy-performance.md): relative 1e-12 in c* and P*, absolute 1e-12 where |P*| < 1e-3.
    real(wp), parameter :: rtol = 1.0e-12_wp, p_abs_below = 1.0e-3_wp
 
 contains
@@ -45,7 +45,7 @@ contains
       call compare_table("test/data/md.txt", model_md, rtol, .false., error)
    end subroutine test_md
 
-   !> Beyond SPEC section 8's main range the measured accuracy is documented in
+   !> Beyond the accuracy target's main range the measured accuracy is documented in
    !> doc/theory.md; here every point must be accurate to 1e-9 or carry a status.
    subroutine test_dw_extended(error)
       type(error_type), allocatable, intent(out) :: error
@@ -189,7 +189,7 @@ contains
       close (unit)
    end subroutine read_table
 
-   !> Relative error for |P*| >= 1e-3, absolute below (SPEC section 8).
+   !> Relative error for |P*| >= 1e-3, absolute below (doc/accuracy-performance.md).
    pure real(wp) function p_scale(p)
       real(wp), intent(in) :: p
       p_scale = merge(abs(p), 1.0_wp, abs(p) >= p_abs_below)

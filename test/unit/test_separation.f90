@@ -14,7 +14,7 @@ module test_separation
 
    public :: collect_separation
 
-   !> SPEC section 8: relative 1e-12, absolute 1e-12 where |value| < 1e-3.
+   !> The accuracy target (doc/accuracy-performance.md): relative 1e-12, absolute 1e-12 where |value| < 1e-3.
    real(wp), parameter :: rtol = 1.0e-12_wp, abs_below = 1.0e-3_wp
 
 
@@ -373,7 +373,7 @@ contains
 
    !> The no-contact family: starts at the first interaction (gbar = 1 + 2 Dcod, P* = 0),
    !> ends with crest gap 0 at a closure; Dugdale consistency h <= h0 inside the zone,
-   !> h >= h0 outside; closure at alpha = 0.3, mu = 1 near c* = 0.10 (MODEL-NOTES).
+   !> h >= h0 outside; closure at alpha = 0.3, mu = 1 near c* = 0.10 (doc/theory.md, "Separation").
    subroutine test_family(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: pa(3) = [0.3_wp, 0.3_wp, 3.0_wp], pm(3) = [1.0_wp, 0.01_wp, 10.0_wp]

@@ -7,10 +7,10 @@ Writes whitespace-separated tables into test/data/ (relative to the repository r
   jkr.txt            alpha a_star P_star                             P* = sin^2(pi a*) - alpha sqrt(tan(pi a*))  (3.4)
   dw.txt             alpha mu a_star c_star gap P_star zone_case     double-Westergaard, (2.22)-(2.28)
   md.txt             alpha mu a_star c_star gap P_star zone_case     Maugis-Dugdale (2.27) + c*=1/2 extension
-  dw_extended.txt, md_extended.txt                                   same columns, extended range (SPEC 8)
+  dw_extended.txt, md_extended.txt                                   same columns, extended range (doc/theory.md)
   dw_nosolution.txt, md_nosolution.txt, ..._extended_nosolution.txt  alpha mu a_star where no state exists
 
-Equations: /work/shared/MODEL-NOTES.md.  One row per equilibrium state: case-1 roots in increasing c*,
+Equations: doc/theory.md (the paper's numbers).  One row per equilibrium state: case-1 roots in increasing c*,
 then the case-2 state (c* = 1/2) when it is valid.  gap = c* - a* is computed directly (no
 cancellation), as are all differences below.
 
@@ -67,7 +67,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))  # tools/reference/ -> the reposit
 DATADIR = os.path.join(ROOT, "test", "data")
 
 # ----------------------------------------------------------------------------------------------
-# grids (SPEC.md section 8)
+# grids (the accuracy targets' main and extended ranges, doc/accuracy-performance.md)
 ALPHA_MAIN = [0.01, 0.1, 0.3, 0.6, 1.0, 3.0, 10.0]
 MU_MAIN = [0.001, 0.01, 0.1, 0.5, 1.0, 2.5, 3.0, 5.0, 10.0, 100.0, 1000.0]
 A_MAIN = [1e-6, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.25, 0.3, 0.4, 0.45, 0.49, 0.5 - 1e-6, 0.5 - 1e-9]
@@ -542,7 +542,7 @@ def make_model(model, extended, cmd, jobs, md_thin=None):
                 rows.append("%s %s %s %s %s %s %d" % (inp(al), inp(mu), inp(a), num(s["c"]),
                                                      num(s["gap"]), num(s["P"]), s["case"]))
     elapsed = time.time() - t0
-    what = {"dw": "double-Westergaard equilibria (MODEL-NOTES.md (2.22)-(2.28)): case 1 a*<c*<1/2, "
+    what = {"dw": "double-Westergaard equilibria (the paper's (2.22)-(2.28), doc/theory.md): case 1 a*<c*<1/2, "
                   "case 2 c*=1/2 where (2.28b) holds",
             "md": "Maugis-Dugdale equilibria ((2.27a,b), Hui et al. 2001) plus the c*=1/2 extension "
                   "(P* = A^2 - Sigma0, valid while sqrt(1-A^2) - A^2 ln((1+sqrt(1-A^2))/A) <= Dcod)"}[model]

@@ -1,4 +1,4 @@
-!> Time per md_equilibrium and md_roots call (SPEC section 9: MD <= 20 us median):
+!> Time per md_equilibrium and md_roots call (performance target, doc/accuracy-performance.md: MD <= 20 us median):
 !> alpha in {0.01, 0.1, 0.3, 1, 10} x mu in {1e-3, 0.1, 1, 3, 30, 1e3} x 40 a* from 1e-6
 !> to 1/2 - 1e-9; each point repeated 20 times, best of 3 (the machine is shared).
 !> Run by study/md_study.sh.
