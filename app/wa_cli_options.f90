@@ -1,4 +1,4 @@
-!> Command-line parsing for the `wavyadhesion` driver (SPEC section 7). Usage errors
+!> Command-line parsing for the `wavyadhesion` driver (doc/user-guide.md, "Command line"). Usage errors
 !> are returned as a message; the caller prints it and exits with status 2.
 module wa_cli_options
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Dense symmetric indefinite factorisation A = P L D L^T P^T with Bunch-Kaufman pivoting
 !> (1x1 and 2x2 pivots; the algorithm of LAPACK's dsytf2/dsytrs, lower storage), its
 !> solve, and the inertia of A from the pivots (Sylvester's law). Written here so that

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The periodic elastic half-space of the smooth-adhesion model on a uniform grid, in the
 !> library's units (x/L, heights/Delta, pressures/p*): the displacement of the Fourier
 !> mode k is u_k = p_k/|k| (doc/theory.md, "Smooth adhesion"), so the stiffness of the

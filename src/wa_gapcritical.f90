@@ -40,7 +40,7 @@ module wa_gapcritical
       real(wp) :: p_jump_in = 0.0_wp, a_jump_in = 0.0_wp
       !> gbar* where contact is first made on the approach (g_touch except for MD)
       real(wp) :: g_contact = 1.0_wp
-      !> Retraction: the most tensile load, with its gbar* and a* (JKR: -Infinity at
+      !> On the retraction, the most tensile load, with its gbar* and a* (JKR: -Infinity at
       !> gbar* = 0, full contact never releases a finite load)
       real(wp) :: p_min = 0.0_wp, g_p_min = 0.0_wp, a_p_min = 0.0_wp
       !> gbar* where contact is lost for good on the retraction (MD can lose and regain

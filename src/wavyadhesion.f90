@@ -58,8 +58,8 @@
 !> - [[md_roots]]: every MD equilibrium at a*.
 !> - [[md_options]]: the numerical choices of md_equilibrium (defaults: the library's).
 !> - [[md_prepare_options]]: check md_options and build the Gauss rules they ask for.
-!> - [[wa_md:md_psi_rules]], [[wa_md:md_psi_gauss]], [[wa_md:md_psi_qaws]],
-!>   [[wa_md:md_psi_qag]], [[wa_md:md_psi_qags]]: md_options' ways to compute Psi_c.
+!> - [[wa_md_psi:md_psi_rules]], [[wa_md_psi:md_psi_gauss]], [[wa_md_psi:md_psi_qaws]],
+!>   [[wa_md_psi:md_psi_qag]], [[wa_md_psi:md_psi_qags]]: md_options' ways to compute Psi_c.
 !>
 !> ### Separation (profiles and mean gap of a solved state)
 !>
@@ -137,6 +137,29 @@
 !> - [[wa_map_types:map_point_meet]], [[wa_map_types:map_point_turn]],
 !>   [[wa_map_types:map_point_end]], [[wa_map_types:map_point_fail]]: the kinds of special point.
 !>
+!> ### Smooth adhesion (Lennard-Jones)
+!>
+!> - [[bem_law_type]], [[lj_law]]: the traction-gap law (LJ 3-9) in the library's units,
+!>   from alpha and mu (same work of adhesion, range epsilon = the MD opening h0).
+!> - [[lj_problem_type]], [[lj_problem]]: the discretised problem (grid of N points per
+!>   period, automatic by default, profile: the sinusoid or samples of one period).
+!> - [[lj_auto_n]], [[lj_zone_length]]: the automatic grid and the interaction-zone length
+!>   it resolves; [[wa_bem_solver:lj_max_unknowns]], [[wa_bem_solver:lj_max_auto_n]]: the caps.
+!> - [[lj_branch_type]], [[lj_trace_options]], [[lj_trace]]: the equilibrium curve from far
+!>   apart to full contact by pseudo-arclength continuation, with stability under both controls.
+!> - [[wa_bem_trace:lj_event_none]], [[wa_bem_trace:lj_event_load_fold]],
+!>   [[wa_bem_trace:lj_event_gap_fold]], [[wa_bem_trace:lj_event_full_contact]],
+!>   [[wa_bem_trace:lj_event_contact]], [[wa_bem_trace:lj_event_end]]: the curve's events.
+!> - [[lj_path_type]], [[lj_cycle_type]], [[lj_paths]], [[lj_cycle]]: load- and
+!>   gap-controlled paths, P_fc, P_pf, the snap-in load and W*, with N vs N/2 error estimates.
+!> - [[wa_bem_path:lj_stage_loading]], [[wa_bem_path:lj_stage_unloading]],
+!>   [[wa_bem_path:lj_stage_approach]], [[wa_bem_path:lj_stage_retraction]],
+!>   [[wa_bem_path:lj_path_jump_start]], [[wa_bem_path:lj_path_jump_end]],
+!>   [[wa_bem_path:lj_path_full_contact_reached]], [[wa_bem_path:lj_path_full_contact_left]],
+!>   [[wa_bem_path:lj_path_pull_off]]: the stages and events of a path.
+!> - [[lj_profile]]: the gap and traction of one state over the period.
+!> - [[lj_rigid_pull_off]]: the rigid-limit pull-off in closed form.
+!>
 !> ### Status and version
 !>
 !> - [[wa_status:wa_ok]], [[wa_status:wa_invalid_argument]], [[wa_status:wa_no_solution]],
@@ -157,8 +180,8 @@ module wavyadhesion
       westergaard_displacement, westergaard_gap
    use wa_dw, only: dw_equilibrium, dw_roots, dw_traction, dw_gap, dw_options, dw_istar_agm, &
       dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
-   use wa_md, only: md_equilibrium, md_roots, md_options, md_prepare_options, md_psi_rules, &
-      md_psi_gauss, md_psi_qaws, md_psi_qag, md_psi_qags
+   use wa_md, only: md_equilibrium, md_roots, md_options, md_prepare_options
+   use wa_md_psi, only: md_psi_rules, md_psi_gauss, md_psi_qaws, md_psi_qag, md_psi_qags
    use wa_models, only: check_model, model_equilibrium, model_roots, model_state, &
       model_profile, state_c_tolerance
    use wa_separation, only: westergaard_mean_gap, jkr_mean_gap, dw_state_gbar, &
@@ -184,7 +207,7 @@ module wavyadhesion
       gap_critical_values, gap_critical_count, gap_critical_names
    use wa_map_types, only: map_control_load, map_control_gap, map_control_both
    use wa_gapmech, only: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
-   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_potential, law_zero, law_peak
+   use wa_bem_law, only: bem_law_type, lj_law
    use wa_bem_solver, only: lj_problem_type, lj_problem, lj_auto_n, lj_zone_length, &
       lj_max_unknowns, lj_max_auto_n
    use wa_bem_path, only: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, &
@@ -237,7 +260,7 @@ module wavyadhesion
       gap_critical_count, gap_critical_names
    public :: map_control_load, map_control_gap, map_control_both
    public :: gap_mechanisms, gap_mechanism_change, gap_mechanism_name
-   public :: bem_law_type, lj_law, law_eval, law_potential, law_zero, law_peak
+   public :: bem_law_type, lj_law
    public :: lj_problem, lj_auto_n, lj_zone_length, lj_max_unknowns, lj_max_auto_n
    public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, &
       lj_profile, lj_stage_loading, &

@@ -5,6 +5,7 @@
 !> convergence at alpha 0.3, mu 3, and the prototype's snap at alpha 0.3, mu 1.
 module test_bem
    use wavyadhesion
+   use wa_bem_law, only: law_eval, law_potential, law_peak
    use wa_kinds, only: wp, pi
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix
