@@ -1,5 +1,5 @@
-/* C-interface test: `fpm test capi`. Calls every function of include/wavyadhesion.h for
- * every model, with valid and invalid arguments, NULL pointers and too small capacities;
+/* C-interface test: `fpm test capi`. Calls every function of include/wavyadhesion.h (the
+ * 0.3 functions, and every 0.2 compatibility name against them bit for bit) for every model, with valid and invalid arguments, NULL pointers and too small capacities;
  * branches, load paths and critical forces are compared with the numbers the command
  * line prints.
  * Prints one line per failed check and a closing "N passed, N failed"; exits non-zero
@@ -73,16 +73,16 @@ static void test_status_messages(void) {
 static void test_equilibrium_closed_forms(void) {
    double c, p;
    int z, st;
-   st = wa_equilibrium(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0.25, &c, &p, &z);
+   st = wa_equilibrium(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0.25, &c, &p, &z, NULL, NULL, 0);
    CHECK(st == WA_OK && c == 0.25 && close_to(p, 0.5, 1e-15) && z == WA_ZONE_INSIDE,
          "westergaard at 1/4: st %d c %g P %g z %d", st, c, p, z);
-   st = wa_equilibrium(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0.5, &c, &p, &z);
+   st = wa_equilibrium(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0.5, &c, &p, &z, NULL, NULL, 0);
    CHECK(st == WA_OK && c == 0.5 && p == 1.0 && z == WA_ZONE_FULL_CONTACT,
          "westergaard at 1/2: st %d c %g P %g z %d", st, c, p, z);
-   st = wa_equilibrium(WA_MODEL_JKR, 0.3, 1.0, 0.2, &c, &p, &z);
+   st = wa_equilibrium(WA_MODEL_JKR, 0.3, 1.0, 0.2, &c, &p, &z, NULL, NULL, 0);
    CHECK(st == WA_OK && c == 0.2 && p == wa_jkr_load(0.3, 0.2) && z == WA_ZONE_INSIDE,
          "jkr at 0.2: st %d c %g P %g z %d", st, c, p, z);
-   st = wa_equilibrium(WA_MODEL_JKR, 0.3, 1.0, 0.5, &c, &p, &z);
+   st = wa_equilibrium(WA_MODEL_JKR, 0.3, 1.0, 0.5, &c, &p, &z, NULL, NULL, 0);
    CHECK(st == WA_OK && isinf(p) && p < 0 && z == WA_ZONE_FULL_CONTACT,
          "jkr at 1/2: st %d P %g z %d", st, p, z);
 }
@@ -95,23 +95,23 @@ static void test_equilibrium_cohesive(void) {
    for (m = WA_MODEL_DW; m <= WA_MODEL_MD; m++) {
       double c, p;
       int z, st;
-      st = wa_equilibrium(m, 0.3, 1e-12, 0.2, &c, &p, &z);
+      st = wa_equilibrium(m, 0.3, 1e-12, 0.2, &c, &p, &z, NULL, NULL, 0);
       CHECK(st == WA_OK && close_to(p, wa_westergaard_load(0.2), 1e-9),
             "model %d, mu -> 0: st %d P %.17g", m, st, p);
-      st = wa_equilibrium(m, 0.3, 0.0, 0.2, &c, &p, &z);
+      st = wa_equilibrium(m, 0.3, 0.0, 0.2, &c, &p, &z, NULL, NULL, 0);
       CHECK(st == WA_OK && close_to(p, wa_westergaard_load(0.2), 1e-14),
             "model %d, mu = 0: st %d P %.17g", m, st, p);
-      st = wa_equilibrium(m, 0.3, 1.0, 0.5, &c, &p, &z);
+      st = wa_equilibrium(m, 0.3, 1.0, 0.5, &c, &p, &z, NULL, NULL, 0);
       CHECK(st == WA_OK && c == 0.5 && z == WA_ZONE_FULL_CONTACT,
             "model %d at 1/2: st %d c %g z %d", m, st, c, z);
       for (i = 1; i < 10; i++) {
          double a = 0.05 * i, cr[8], pr[8];
          int zr[8], n = -1;
-         st = wa_equilibrium(m, 0.3, 1.0, a, &c, &p, &z);
+         st = wa_equilibrium(m, 0.3, 1.0, a, &c, &p, &z, NULL, NULL, 0);
          CHECK(st == WA_OK && c >= a && c <= 0.5 && isfinite(p) &&
                   (z == WA_ZONE_INSIDE || z == WA_ZONE_WHOLE_PERIOD),
                "model %d at a* %g: st %d c %g P %g z %d", m, a, st, c, p, z);
-         st = wa_roots(m, 0.3, 1.0, a, 8, cr, pr, zr, &n);
+         st = wa_roots(m, 0.3, 1.0, a, 8, cr, pr, zr, NULL, &n, NULL, 0);
          CHECK(st == WA_OK && n >= 1 && close_to(cr[0], c, 1e-12) && close_to(pr[0], p, 1e-12) &&
                   zr[0] == z,
                "model %d at a* %g: roots[0] is the principal state (st %d n %d)", m, a, st, n);
@@ -128,27 +128,27 @@ static void test_equilibrium_invalid(void) {
    const double bad_a[] = {-1e-3, 0.5000001, NAN, -INFINITY};
    for (m = 0; m < 4; m++) {
       for (i = 0; i < 4; i++) {
-         int st = wa_equilibrium(models[m], bad_alpha[i], 1.0, 0.2, &c, &p, &z);
+         int st = wa_equilibrium(models[m], bad_alpha[i], 1.0, 0.2, &c, &p, &z, NULL, NULL, 0);
          CHECK(st == WA_INVALID_ARGUMENT && isnan(c) && isnan(p) && z == 0,
                "model %d alpha %g: st %d", models[m], bad_alpha[i], st);
       }
       for (i = 0; i < 3; i++)
-         CHECK(wa_equilibrium(models[m], 0.3, bad_mu[i], 0.2, &c, &p, &z) ==
+         CHECK(wa_equilibrium(models[m], 0.3, bad_mu[i], 0.2, &c, &p, &z, NULL, NULL, 0) ==
                   WA_INVALID_ARGUMENT,
                "model %d mu %g", models[m], bad_mu[i]);
       for (i = 0; i < 4; i++)
-         CHECK(wa_equilibrium(models[m], 0.3, 1.0, bad_a[i], &c, &p, &z) ==
+         CHECK(wa_equilibrium(models[m], 0.3, 1.0, bad_a[i], &c, &p, &z, NULL, NULL, 0) ==
                   WA_INVALID_ARGUMENT,
                "model %d a* %g", models[m], bad_a[i]);
-      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, NULL, &p, &z) == WA_INVALID_ARGUMENT,
+      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, NULL, &p, &z, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL c_star");
-      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, &c, NULL, &z) == WA_INVALID_ARGUMENT,
+      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, &c, NULL, &z, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL P_star");
-      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, &c, &p, NULL) == WA_INVALID_ARGUMENT,
+      CHECK(wa_equilibrium(models[m], 0.3, 1.0, 0.2, &c, &p, NULL, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL zone_case");
    }
-   CHECK(wa_equilibrium(4, 0.3, 1.0, 0.2, &c, &p, &z) == WA_INVALID_ARGUMENT, "model 4");
-   CHECK(wa_equilibrium(-1, 0.3, 1.0, 0.2, &c, &p, &z) == WA_INVALID_ARGUMENT, "model -1");
+   CHECK(wa_equilibrium(4, 0.3, 1.0, 0.2, &c, &p, &z, NULL, NULL, 0) == WA_INVALID_ARGUMENT, "model 4");
+   CHECK(wa_equilibrium(-1, 0.3, 1.0, 0.2, &c, &p, &z, NULL, NULL, 0) == WA_INVALID_ARGUMENT, "model -1");
 }
 
 static void test_messages(void) {
@@ -183,12 +183,12 @@ static void test_roots_closed_forms(void) {
    for (m = WA_MODEL_WESTERGAARD; m <= WA_MODEL_JKR; m++) {
       double c[2] = {-1, -1}, p[2] = {-1, -1};
       int z[2] = {-1, -1}, n = -1, st;
-      st = wa_roots(m, 0.3, 1.0, 0.2, 2, c, p, z, &n);
+      st = wa_roots(m, 0.3, 1.0, 0.2, 2, c, p, z, NULL, &n, NULL, 0);
       CHECK(st == WA_OK && n == 1 && c[0] == 0.2 && z[0] == WA_ZONE_INSIDE && c[1] == -1,
             "model %d roots: st %d n %d", m, st, n);
       CHECK(p[0] == (m == WA_MODEL_JKR ? wa_jkr_load(0.3, 0.2) : wa_westergaard_load(0.2)),
             "model %d root load", m);
-      st = wa_roots(m, 0.3, 1.0, 0.2, 0, NULL, NULL, NULL, &n);
+      st = wa_roots(m, 0.3, 1.0, 0.2, 0, NULL, NULL, NULL, NULL, &n, NULL, 0);
       CHECK(st == WA_CAPACITY_TOO_SMALL && n == 1, "model %d count query: st %d n %d", m, st,
             n);
    }
@@ -201,23 +201,23 @@ static void test_roots_invalid(void) {
    for (m = 0; m < 4; m++) {
       int md = models[m];
       n = 5;
-      CHECK(wa_roots(md, 0.3, 1.0, 0.9, 4, c, p, z, &n) == WA_INVALID_ARGUMENT && n == 0,
+      CHECK(wa_roots(md, 0.3, 1.0, 0.9, 4, c, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT && n == 0,
             "model %d a* 0.9", md);
-      CHECK(wa_roots(md, NAN, 1.0, 0.2, 4, c, p, z, &n) == WA_INVALID_ARGUMENT && n == 0,
+      CHECK(wa_roots(md, NAN, 1.0, 0.2, 4, c, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT && n == 0,
             "model %d alpha NaN", md);
-      CHECK(wa_roots(md, 0.3, -1.0, 0.2, 4, c, p, z, &n) == WA_INVALID_ARGUMENT, "mu < 0");
-      CHECK(wa_roots(md, 0.3, 1.0, 0.2, -3, c, p, z, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_roots(md, 0.3, -1.0, 0.2, 4, c, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT, "mu < 0");
+      CHECK(wa_roots(md, 0.3, 1.0, 0.2, -3, c, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "capacity < 0");
-      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, p, z, NULL) == WA_INVALID_ARGUMENT,
+      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, p, z, NULL, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL n_roots");
-      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, NULL, p, z, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, NULL, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL c_star");
-      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, NULL, z, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, NULL, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL P_star");
-      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, p, NULL, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_roots(md, 0.3, 1.0, 0.2, 4, c, p, NULL, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL zone_case");
    }
-   CHECK(wa_roots(17, 0.3, 1.0, 0.2, 4, c, p, z, &n) == WA_INVALID_ARGUMENT && n == 0,
+   CHECK(wa_roots(17, 0.3, 1.0, 0.2, 4, c, p, z, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT && n == 0,
          "model 17");
 }
 
@@ -232,7 +232,7 @@ static void test_roots_grid(void) {
             for (i = 1; i < 50; i++) {
                double a = 0.01 * i, c[8], p[8];
                int z[8], n = 0;
-               int st = wa_roots(m, alphas[ia], mus[im], a, 8, c, p, z, &n);
+               int st = wa_roots(m, alphas[ia], mus[im], a, 8, c, p, z, NULL, &n, NULL, 0);
                CHECK(st == WA_OK && n >= 1, "model %d roots at (%g, %g, %g): st %d n %d", m,
                      alphas[ia], mus[im], a, st, n);
                for (k = 0; k < n && k < 8; k++)
@@ -248,14 +248,14 @@ static void test_roots_grid(void) {
 static void test_roots_capacity(void) {
    double c[3], p[3];
    int z[3], n = 0, cap, k;
-   int st = wa_roots(WA_MODEL_MD, 0.3, 1.0, 0.3, 3, c, p, z, &n);
+   int st = wa_roots(WA_MODEL_MD, 0.3, 1.0, 0.3, 3, c, p, z, NULL, &n, NULL, 0);
    CHECK(st == WA_OK && n == 3 && z[0] == 1 && z[1] == 1 && z[2] == 2 && c[0] < c[1],
          "md at (0.3, 1, 0.3): st %d n %d (want 3 states: 1, 1, 2)", st, n);
    if (st != WA_OK || n < 2) return;
    for (cap = 0; cap < n; cap++) {
       double c1[4] = {-7, -7, -7, -7}, p1[4] = {-7, -7, -7, -7};
       int z1[4] = {-7, -7, -7, -7}, n1 = 0;
-      st = wa_roots(WA_MODEL_MD, 0.3, 1.0, 0.3, cap, c1, p1, z1, &n1);
+      st = wa_roots(WA_MODEL_MD, 0.3, 1.0, 0.3, cap, c1, p1, z1, NULL, &n1, NULL, 0);
       CHECK(st == WA_CAPACITY_TOO_SMALL && n1 == n, "capacity %d: st %d n %d", cap, st, n1);
       for (k = 0; k < cap; k++)
          CHECK(c1[k] == c[k] && p1[k] == p[k] && z1[k] == z[k], "capacity %d: state %d", cap,
@@ -272,7 +272,7 @@ static void test_roots_capacity(void) {
    for (k = WA_MODEL_DW; k <= WA_MODEL_MD; k++) {   /* capacity 0: count only */
       double c0[1] = {-7};
       int n0 = 0;
-      st = wa_roots(k, 0.3, 1.0, 0.2, 0, c0, NULL, NULL, &n0);
+      st = wa_roots(k, 0.3, 1.0, 0.2, 0, c0, NULL, NULL, NULL, &n0, NULL, 0);
       CHECK(st == WA_CAPACITY_TOO_SMALL && n0 >= 1 && c0[0] == -7,
             "model %d capacity 0: st %d n %d", k, st, n0);
    }
@@ -292,7 +292,7 @@ static void *run_grid(void *arg) {
    for (i = 0; i < GRID; i++)
       job->st[i] = wa_equilibrium(job->model, 0.1 + 0.002 * i, 0.5 + 0.01 * i,
                                   0.5 * (i + 1) / (GRID + 1), &job->c[i], &job->p[i],
-                                  &job->z[i]);
+                                  &job->z[i], NULL, NULL, 0);
    return NULL;
 }
 
@@ -330,8 +330,8 @@ typedef struct {
 
 static int trace(int model, double alpha, double mu, branch_buf *b) {
    b->n = -1;
-   b->st = wa_trace_branch(model, alpha, mu, BRANCH_CAP, b->a, b->c, b->p, b->z, b->s, b->e,
-                           &b->n);
+   b->st = wa_trace_branch(model, alpha, mu, BRANCH_CAP, b->a, b->c, b->p, b->z, b->s, b->e, NULL,
+                           &b->n, NULL, 0);
    return b->st;
 }
 
@@ -376,7 +376,7 @@ static void test_branch_every_model(void) {
          if (b.e[i] == WA_EVENT_SWITCH) continue;
          /* where a* turns back two roots merge: the root finder cannot separate them */
          if ((b.a[i] - b.a[i - 1]) * (b.a[i + 1] - b.a[i]) <= 0) continue;
-         if (wa_roots(models[m], 0.3, 1.0, b.a[i], 8, cr, pr, zr, &nr) != WA_OK) {
+         if (wa_roots(models[m], 0.3, 1.0, b.a[i], 8, cr, pr, zr, NULL, &nr, NULL, 0) != WA_OK) {
             on_curve = 0;
             break;
          }
@@ -431,14 +431,14 @@ static void test_branch_capacity(void) {
          continue;
       }
       n = -1;
-      st = wa_trace_branch(models[m], 0.3, 5.0, 0, NULL, NULL, NULL, NULL, NULL, NULL, &n);
+      st = wa_trace_branch(models[m], 0.3, 5.0, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &n, NULL, 0);
       CHECK(st == WA_CAPACITY_TOO_SMALL && n == full.n, "model %d count query: st %d n %d/%d",
             models[m], st, n, full.n);
       for (i = 0; i < 12; i++) {
          a[i] = c[i] = p[i] = -7;
          z[i] = s[i] = e[i] = -7;
       }
-      st = wa_trace_branch(models[m], 0.3, 5.0, 10, a, c, p, z, s, e, &n);
+      st = wa_trace_branch(models[m], 0.3, 5.0, 10, a, c, p, z, s, e, NULL, &n, NULL, 0);
       CHECK(st == WA_CAPACITY_TOO_SMALL && n == full.n, "model %d capacity 10: st %d n %d",
             models[m], st, n);
       for (i = 0; i < 10; i++)
@@ -464,40 +464,40 @@ static void test_branch_invalid(void) {
    const double bad_mu[] = {-1e-3, NAN, INFINITY};
    for (m = 0; m < 4; m++) {
       int md = models[m];
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, e, NULL) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, e, NULL, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "model %d NULL n_points", md);
-      CHECK(wa_trace_branch(md, 0.3, 1.0, -1, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, -1, a, c, p, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "model %d capacity -1", md);
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, NULL, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, NULL, c, p, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL a_star");
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, NULL, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, NULL, p, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL c_star");
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, NULL, z, s, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, NULL, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL P_star");
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, NULL, s, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, NULL, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL zone_case");
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, NULL, e, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, NULL, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL stable");
-      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, NULL, &n) == WA_INVALID_ARGUMENT,
+      CHECK(wa_trace_branch(md, 0.3, 1.0, 4, a, c, p, z, s, NULL, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL event");
       for (i = 0; i < 4; i++) {
          n = 5;
-         CHECK(wa_trace_branch(md, bad_alpha[i], 1.0, 4, a, c, p, z, s, e, &n) ==
+         CHECK(wa_trace_branch(md, bad_alpha[i], 1.0, 4, a, c, p, z, s, e, NULL, &n, NULL, 0) ==
                   WA_INVALID_ARGUMENT && n == 0,
                "model %d alpha %g", md, bad_alpha[i]);
       }
       for (i = 0; i < 3; i++) {
          n = 5;
-         CHECK(wa_trace_branch(md, 0.3, bad_mu[i], 4, a, c, p, z, s, e, &n) ==
+         CHECK(wa_trace_branch(md, 0.3, bad_mu[i], 4, a, c, p, z, s, e, NULL, &n, NULL, 0) ==
                   WA_INVALID_ARGUMENT && n == 0,
                "model %d mu %g", md, bad_mu[i]);
       }
    }
    n = 5;
-   CHECK(wa_trace_branch(4, 0.3, 1.0, 4, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT &&
+   CHECK(wa_trace_branch(4, 0.3, 1.0, 4, a, c, p, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT &&
             n == 0,
          "model 4");
-   CHECK(wa_trace_branch(-1, 0.3, 1.0, 4, a, c, p, z, s, e, &n) == WA_INVALID_ARGUMENT,
+   CHECK(wa_trace_branch(-1, 0.3, 1.0, 4, a, c, p, z, s, e, NULL, &n, NULL, 0) == WA_INVALID_ARGUMENT,
          "model -1");
    CHECK(a[0] == -7, "nothing written on invalid arguments");
    CHECK(wa_trace_branch_msg(WA_MODEL_DW, -0.3, 1.0, 4, a, c, p, z, s, e, &n, msg,
@@ -536,7 +536,7 @@ static void test_critical_values(void) {
    int i, m;
    for (i = 0; i < (int)(sizeof cases / sizeof cases[0]); i++) {
       double fc = 1, pf = 1;
-      int st = wa_critical_forces(cases[i].model, cases[i].alpha, cases[i].mu, &fc, &pf);
+      int st = wa_critical_forces(cases[i].model, cases[i].alpha, cases[i].mu, &fc, &pf, NULL, 0);
       CHECK(st == WA_OK && close_to(fc, cases[i].p_fc, 1e-14) &&
                close_to(pf, cases[i].p_pf, 1e-14),
             "critical model %d (%g, %g): st %d P_fc %.17g P_pf %.17g", cases[i].model,
@@ -544,7 +544,7 @@ static void test_critical_values(void) {
    }
    for (i = 0; i < 3; i++) {        /* JKR: P_fc independent of mu, P_pf = -inf */
       double fc, pf;
-      int st = wa_critical_forces(WA_MODEL_JKR, 0.3, 0.5 * i, &fc, &pf);
+      int st = wa_critical_forces(WA_MODEL_JKR, 0.3, 0.5 * i, &fc, &pf, NULL, 0);
       CHECK(st == WA_OK && close_to(fc, 3.8772776072055104e-01, 1e-14) && isinf(pf) &&
                pf < 0,
             "jkr critical: st %d P_fc %.17g P_pf %g", st, fc, pf);
@@ -553,9 +553,9 @@ static void test_critical_values(void) {
       double fc, pf, fc2, pf2, fcs[2], pfs[2], mus[2] = {1.0, 5.0};
       double a[64], c[64], p[64];
       int stage[64], ev[64], n = 0, fm[2], pm[2], k, st1, st2, st3;
-      st1 = wa_critical_forces(models[m], 0.3, 5.0, &fc, &pf);
-      st2 = wa_load_path(models[m], 0.3, 5.0, 64, stage, ev, a, c, p, &n, &fc2, &pf2);
-      st3 = wa_critical_sweep(models[m], 0.3, 2, mus, fcs, pfs, fm, pm);
+      st1 = wa_critical_forces(models[m], 0.3, 5.0, &fc, &pf, NULL, 0);
+      st2 = wa_load_path(models[m], 0.3, 5.0, 64, stage, ev, a, c, p, &n, &fc2, &pf2, NULL, 0);
+      st3 = wa_critical_sweep(models[m], 0.3, 2, mus, fcs, pfs, fm, pm, NULL, NULL, 0);
       CHECK(st1 == WA_OK && st2 == WA_OK && st3 == WA_OK &&
                memcmp(&fc, &fc2, sizeof fc) == 0 && memcmp(&pf, &pf2, sizeof pf) == 0 &&
                memcmp(&fc, &fcs[1], sizeof fc) == 0 && memcmp(&pf, &pfs[1], sizeof pf) == 0,
@@ -576,22 +576,22 @@ static void test_critical_invalid(void) {
    int m;
    char msg[256];
    for (m = 0; m < 4; m++) {
-      CHECK(wa_critical_forces(models[m], 0.3, 1.0, NULL, &pf) == WA_INVALID_ARGUMENT,
+      CHECK(wa_critical_forces(models[m], 0.3, 1.0, NULL, &pf, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL P_fc");
-      CHECK(wa_critical_forces(models[m], 0.3, 1.0, &fc, NULL) == WA_INVALID_ARGUMENT,
+      CHECK(wa_critical_forces(models[m], 0.3, 1.0, &fc, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
             "NULL P_pf");
       fc = pf = 1;
-      CHECK(wa_critical_forces(models[m], 0.0, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT &&
+      CHECK(wa_critical_forces(models[m], 0.0, 1.0, &fc, &pf, NULL, 0) == WA_INVALID_ARGUMENT &&
                isnan(fc) && isnan(pf),
             "model %d alpha 0: NaN outputs", models[m]);
-      CHECK(wa_critical_forces(models[m], NAN, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT,
+      CHECK(wa_critical_forces(models[m], NAN, 1.0, &fc, &pf, NULL, 0) == WA_INVALID_ARGUMENT,
             "alpha NaN");
-      CHECK(wa_critical_forces(models[m], 0.3, -1.0, &fc, &pf) == WA_INVALID_ARGUMENT,
+      CHECK(wa_critical_forces(models[m], 0.3, -1.0, &fc, &pf, NULL, 0) == WA_INVALID_ARGUMENT,
             "mu < 0");
-      CHECK(wa_critical_forces(models[m], 0.3, INFINITY, &fc, &pf) == WA_INVALID_ARGUMENT,
+      CHECK(wa_critical_forces(models[m], 0.3, INFINITY, &fc, &pf, NULL, 0) == WA_INVALID_ARGUMENT,
             "mu inf");
    }
-   CHECK(wa_critical_forces(5, 0.3, 1.0, &fc, &pf) == WA_INVALID_ARGUMENT && isnan(fc),
+   CHECK(wa_critical_forces(5, 0.3, 1.0, &fc, &pf, NULL, 0) == WA_INVALID_ARGUMENT && isnan(fc),
          "model 5");
    CHECK(wa_critical_forces_msg(WA_MODEL_MD, 0.3, -2.0, &fc, &pf, msg, sizeof msg) ==
             WA_INVALID_ARGUMENT && strstr(msg, "mu") && strstr(msg, "0 or [1e-100, 1e100]"),
@@ -609,7 +609,7 @@ static void test_load_path(void) {
    double a[8], c[8], p[8], fc, pf;
    int stage[8], ev[8], n = -1, k, st, m, same = 1;
    char msg[256];
-   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 8, stage, ev, a, c, p, &n, &fc, &pf);
+   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 8, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0);
    CHECK(st == WA_OK && n == 7, "dw path (0.3, 5): st %d n %d (want 7)", st, n);
    for (k = 0; k < 7 && n == 7; k++)
       same = same && stage[k] == want_stage[k] && ev[k] == want_event[k];
@@ -622,42 +622,42 @@ static void test_load_path(void) {
       a[k] = -7;
       ev[k] = -7;
    }
-   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 3, stage, ev, a, c, p, &n, &fc, &pf);
+   st = wa_load_path(WA_MODEL_DW, 0.3, 5.0, 3, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0);
    CHECK(st == WA_CAPACITY_TOO_SMALL && n == 7 && ev[2] == 3 && ev[3] == -7 && a[3] == -7 &&
             close_to(fc, 3.8750724174362783e-01, 1e-14),
          "path capacity 3: st %d n %d", st, n);
-   st = wa_load_path(WA_MODEL_JKR, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, &n, &fc, &pf);
+   st = wa_load_path(WA_MODEL_JKR, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, &n, &fc, &pf, NULL, 0);
    CHECK(st == WA_CAPACITY_TOO_SMALL && n == 5 && isinf(pf) && pf < 0,
          "jkr path count: st %d n %d", st, n);
    for (m = 0; m < 4; m++) {
       int md = models[m];
-      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, NULL, &fc, &pf) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, NULL, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL n_events");
-      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, NULL, &pf) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, NULL, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL P_fc");
-      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, NULL) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, NULL, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL P_pf");
-      CHECK(wa_load_path(md, 0.3, 1.0, 8, NULL, ev, a, c, p, &n, &fc, &pf) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, NULL, ev, a, c, p, &n, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL stage");
-      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, NULL, &n, &fc, &pf) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, 8, stage, ev, a, c, NULL, &n, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL P_star");
-      CHECK(wa_load_path(md, 0.3, 1.0, -2, stage, ev, a, c, p, &n, &fc, &pf) ==
+      CHECK(wa_load_path(md, 0.3, 1.0, -2, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "capacity -2");
       n = 3;
-      CHECK(wa_load_path(md, -0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+      CHECK(wa_load_path(md, -0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT && n == 0 && isnan(fc) && isnan(pf),
             "model %d alpha < 0", md);
-      CHECK(wa_load_path(md, 0.3, NAN, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+      CHECK(wa_load_path(md, 0.3, NAN, 8, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "mu NaN");
    }
-   CHECK(wa_load_path(9, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf) ==
+   CHECK(wa_load_path(9, 0.3, 1.0, 8, stage, ev, a, c, p, &n, &fc, &pf, NULL, 0) ==
             WA_INVALID_ARGUMENT,
          "model 9");
    st = wa_load_path_msg(WA_MODEL_DW, 0.3, 5.0, 3, stage, ev, a, c, p, &n, &fc, &pf, msg,
@@ -672,7 +672,7 @@ static void test_critical_sweep(void) {
    double mu[3] = {0.1, 1.0, 5.0}, fc[3], pf[3];
    int fm[3], pm[3], st, i;
    char msg[256];
-   st = wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, pm);
+   st = wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, pm, NULL, NULL, 0);
    CHECK(st == WA_OK && fm[0] == WA_MECHANISM_GRADUAL && pm[0] == WA_MECHANISM_GRADUAL &&
             fm[1] == WA_MECHANISM_GRADUAL && pm[1] == WA_MECHANISM_JUMP_CASE1 &&
             fm[2] == WA_MECHANISM_JUMP_CASE1 && pm[2] == WA_MECHANISM_JUMP_CASE2,
@@ -680,10 +680,10 @@ static void test_critical_sweep(void) {
          pm[1], pm[2]);
    for (i = 0; i < 3; i++) {
       double f1, p1;
-      wa_critical_forces(WA_MODEL_DW, 0.3, mu[i], &f1, &p1);
+      wa_critical_forces(WA_MODEL_DW, 0.3, mu[i], &f1, &p1, NULL, 0);
       CHECK(fc[i] == f1 && pf[i] == p1, "sweep point %d equals wa_critical_forces", i);
    }
-   st = wa_critical_sweep(WA_MODEL_DW, 0.6, 1, mu + 2, fc, pf, fm, pm);
+   st = wa_critical_sweep(WA_MODEL_DW, 0.6, 1, mu + 2, fc, pf, fm, pm, NULL, NULL, 0);
    CHECK(st == WA_OK && fm[0] == WA_MECHANISM_SNAP && fc[0] == 0.0,
          "dw (0.6, 5): full contact by a snap at P* = 0 (st %d mech %d)", st, fm[0]);
    mu[1] = -1.0;
@@ -691,18 +691,18 @@ static void test_critical_sweep(void) {
    CHECK(st == WA_INVALID_ARGUMENT && isnan(fc[0]) && isnan(pf[2]) && fm[0] == -1 &&
             pm[2] == -1 && strstr(msg, "mu[1]"),
          "invalid mu[1]: st %d msg '%s'", st, msg);
-   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 0, NULL, NULL, NULL, NULL, NULL) == WA_OK,
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0) == WA_OK,
          "empty sweep");
-   CHECK(wa_critical_sweep(WA_MODEL_DW, -0.3, 0, NULL, NULL, NULL, NULL, NULL) ==
+   CHECK(wa_critical_sweep(WA_MODEL_DW, -0.3, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0) ==
             WA_INVALID_ARGUMENT,
          "empty sweep still validates alpha");
-   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, -1, mu, fc, pf, fm, pm) == WA_INVALID_ARGUMENT,
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, -1, mu, fc, pf, fm, pm, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
          "n_mu < 0");
-   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, NULL, fc, pf, fm, pm) == WA_INVALID_ARGUMENT,
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, NULL, fc, pf, fm, pm, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
          "NULL mu");
-   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, NULL) == WA_INVALID_ARGUMENT,
+   CHECK(wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu, fc, pf, fm, NULL, NULL, NULL, 0) == WA_INVALID_ARGUMENT,
          "NULL pf_mechanism");
-   CHECK(wa_critical_sweep(8, 0.3, 3, mu, fc, pf, fm, pm) == WA_INVALID_ARGUMENT, "model 8");
+   CHECK(wa_critical_sweep(8, 0.3, 3, mu, fc, pf, fm, pm, NULL, NULL, 0) == WA_INVALID_ARGUMENT, "model 8");
 }
 
 /* A sweep never loses work (issue 9): each row equals wa_critical_forces at its mu, a
@@ -719,7 +719,7 @@ static void test_sweep_keeps_rows(void) {
                                  sizeof msg);
    for (i = 0; i < 6; i++) {
       double f1, p1;
-      int s1 = wa_critical_forces(WA_MODEL_MD, 1.0, mu[i], &f1, &p1);
+      int s1 = wa_critical_forces(WA_MODEL_MD, 1.0, mu[i], &f1, &p1, NULL, 0);
       CHECK(rs[i] == s1, "md row %d: row_status %d, wa_critical_forces %d", i, rs[i], s1);
       if (s1 == WA_OK) {
          CHECK(fc[i] == f1 && pf[i] == p1 && fm[i] >= 0 && pm[i] >= 0,
@@ -743,7 +743,7 @@ static void test_sweep_keeps_rows(void) {
       double mu2[3] = {0.1, 1.0, 5.0}, fc2[3], pf2[3];
       int fm2[3], pm2[3];
       st = wa_critical_sweep_status(WA_MODEL_DW, 0.3, 3, mu2, fc, pf, fm, pm, rs, NULL, 0);
-      wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu2, fc2, pf2, fm2, pm2);
+      wa_critical_sweep(WA_MODEL_DW, 0.3, 3, mu2, fc2, pf2, fm2, pm2, NULL, NULL, 0);
       CHECK(st == WA_OK && rs[0] == WA_OK && rs[1] == WA_OK && rs[2] == WA_OK &&
                fc[2] == fc2[2] && pf[1] == pf2[1] && fm[2] == fm2[2],
             "dw sweep_status: st %d rows %d %d %d", st, rs[0], rs[1], rs[2]);
@@ -778,7 +778,7 @@ typedef struct {
 static void *run_branch_job(void *arg) {
    branch_job *job = (branch_job *)arg;
    trace(job->model, 0.3, job->mu, &job->b);
-   job->st = wa_critical_forces(job->model, 0.3, job->mu, &job->fc, &job->pf);
+   job->st = wa_critical_forces(job->model, 0.3, job->mu, &job->fc, &job->pf, NULL, 0);
    return NULL;
 }
 
@@ -842,7 +842,7 @@ static void test_adhesion_map(void) {
    const double alpha[3] = {0.01, 0.0102, 0.0104};
    int code[512], n = -1, st, i, saw101 = 0, saw212 = 0, small[2];
    double a[512], m[512], as[2], ms[2];
-   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, alpha, 1e-3, 1e3, 60, 512, code, a, m, &n, NULL, 0);
    CHECK(st == WA_OK && n >= 9, "adhesion_map: status %d, %d points", st, n);
    for (i = 0; i < n && i < 512; i++) {
       if (code[i] == 101 && a[i] == 0.01) saw101 = close_to(m[i], 1.8098847396573090, 1e-8);
@@ -851,19 +851,19 @@ static void test_adhesion_map(void) {
          CHECK(0, "adhesion_map: alpha increases along a curve (point %d)", i);
    }
    CHECK(saw101 && saw212, "adhesion_map: 101 at mu 1.80988, 212 at mu 43.5885");
-   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 2, small, as, ms, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, alpha, 1e-3, 1e3, 60, 2, small, as, ms, &n, NULL, 0);
    CHECK(st == WA_CAPACITY_TOO_SMALL && n >= 9, "adhesion_map capacity 2: %d, %d", st, n);
-   st = wa_adhesion_map(WA_MODEL_JKR, 3, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_JKR, WA_MAP_CONTROL_LOAD, 3, alpha, 1e-3, 1e3, 60, 512, code, a, m, &n, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map jkr refused");
-   st = wa_adhesion_map(WA_MODEL_DW, 0, alpha, 1e-3, 1e3, 512, code, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 0, alpha, 1e-3, 1e3, 60, 512, code, a, m, &n, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map n_alpha 0 refused");
-   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e3, 1e-3, 512, code, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, alpha, 1e3, 1e-3, 60, 512, code, a, m, &n, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map mu_lo > mu_hi refused");
-   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, NULL, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, alpha, 1e-3, 1e3, 60, 512, NULL, a, m, &n, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL code refused");
-   st = wa_adhesion_map(WA_MODEL_DW, 3, NULL, 1e-3, 1e3, 512, code, a, m, &n);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, NULL, 1e-3, 1e3, 60, 512, code, a, m, &n, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT && n == 0, "adhesion_map NULL alpha refused");
-   st = wa_adhesion_map(WA_MODEL_DW, 3, alpha, 1e-3, 1e3, 512, code, a, m, NULL);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 3, alpha, 1e-3, 1e3, 60, 512, code, a, m, NULL, NULL, 0);
    CHECK(st == WA_INVALID_ARGUMENT, "adhesion_map NULL n_out refused");
 }
 
@@ -888,7 +888,7 @@ static void test_adhesion_map_control(void) {
    st = wa_adhesion_map_control(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 2, alpha, 1e-2, 1e2, 256,
                                 code, a, m, &n);
    CHECK(st == WA_OK, "adhesion_map_control load: status %d", st);
-   st = wa_adhesion_map(WA_MODEL_DW, 2, alpha, 1e-2, 1e2, 256, code2, a2, m2, &n2);
+   st = wa_adhesion_map(WA_MODEL_DW, WA_MAP_CONTROL_LOAD, 2, alpha, 1e-2, 1e2, 60, 256, code2, a2, m2, &n2, NULL, 0);
    CHECK(st == WA_OK && n2 == n, "adhesion_map_control load = adhesion_map (%d, %d)", n, n2);
    for (i = 0; i < n && i < n2 && i < 256; i++)
       if (code[i] != code2[i] || a[i] != a2[i] || m[i] != m2[i]) {
@@ -917,7 +917,7 @@ static void test_gap_functions(void) {
       double a;
       for (a = 0.05; a < 0.5; a += 0.1) {
          st = wa_equilibrium_gap(models[m], 0.3, 1.0, a, &c, &p, &z, &g);
-         wa_equilibrium(models[m], 0.3, 1.0, a, &c0, &p0, &z0);
+         wa_equilibrium(models[m], 0.3, 1.0, a, &c0, &p0, &z0, NULL, NULL, 0);
          CHECK(st == WA_OK && c == c0 && p == p0 && z == z0 && isfinite(g) && g >= 0,
                "equilibrium_gap model %d a* %g: status %d gbar %g", m, a, st, g);
          st = wa_roots_gap(models[m], 0.3, 1.0, a, 8, cs, ps, zs, gs, &n);
@@ -966,7 +966,7 @@ static void test_gap_functions(void) {
       for (m = 0; m < 4; m++) {
          int st1 = wa_trace_branch_gap(models[m], 0.3, 1.0, CAP, a1, c1, p1, z1, s1, e1, g1,
                                        &n1);
-         int st2 = wa_trace_branch(models[m], 0.3, 1.0, CAP, a2, c2, p2, z2, s2, e2, &n2);
+         int st2 = wa_trace_branch(models[m], 0.3, 1.0, CAP, a2, c2, p2, z2, s2, e2, NULL, &n2, NULL, 0);
          CHECK(st1 == WA_OK && st2 == WA_OK && n1 == n2, "branch_gap model %d: %d %d n %d %d",
                m, st1, st2, n1, n2);
          for (k = 0; k < n1 && k < n2; k++) {
@@ -1014,7 +1014,7 @@ static void test_profile(void) {
          st = wa_roots_gap(models[m], 0.3, 1.0, a, 8, cs, ps, zs, gs, &n);
          for (k = 0; k < n && st == WA_OK; k++) {
             int ok = 1, on_contact = 1;
-            int sp = wa_profile(models[m], 0.3, 1.0, a, cs[k], N, x, t, h);
+            int sp = wa_profile(models[m], 0.3, 1.0, a, cs[k], N, x, t, h, NULL, 0);
             CHECK(sp == WA_OK, "profile model %d a* %g root %d: status %d", m, a, k, sp);
             if (sp != WA_OK) continue;
             for (i = 0; i < N; i++) {
@@ -1032,7 +1032,7 @@ static void test_profile(void) {
                   period_mean(h, N), gs[k]);
             if (m == WA_MODEL_MD && zs[k] == WA_ZONE_INSIDE) {
                double dcod = cbrt(pow(0.3, 4) / 2) / 1.0, xc = cs[k], hc;
-               wa_profile(models[m], 0.3, 1.0, a, cs[k], 1, &xc, t, &hc);
+               wa_profile(models[m], 0.3, 1.0, a, cs[k], 1, &xc, t, &hc, NULL, 0);
                CHECK(close_to(hc, 2 * dcod, 1e-10), "md h(c*) %.17g vs 2 Dcod %.17g", hc,
                      2 * dcod);
             }
@@ -1042,7 +1042,7 @@ static void test_profile(void) {
    /* values of tools/reference/make_separation_reference.py (test/data/separation_*.txt rows) */
    {
       double xs = 0.36, tt, hh;
-      st = wa_profile(WA_MODEL_MD, 0.01, 0.001, 0.3, 0.5, 1, &xs, &tt, &hh);
+      st = wa_profile(WA_MODEL_MD, 0.01, 0.001, 0.3, 0.5, 1, &xs, &tt, &hh, NULL, 0);
       CHECK(st == WA_OK && close_to(tt, -4.5930363226678917957e-5, 1e-12) &&
                close_to(hh, 0.1023641757601853788, 1e-12),
             "md reference row: status %d traction %.17g gap %.17g", st, tt, hh);
@@ -1050,7 +1050,7 @@ static void test_profile(void) {
    /* MD without contact (a* = 0): a Dugdale zone around the crest */
    {
       double xs[3] = {0.0, 0.05, 0.3}, tt[3], hh[3], dcod = cbrt(pow(0.3, 4) / 2);
-      st = wa_profile(WA_MODEL_MD, 0.3, 1.0, 0.0, 0.05, 3, xs, tt, hh);
+      st = wa_profile(WA_MODEL_MD, 0.3, 1.0, 0.0, 0.05, 3, xs, tt, hh, NULL, 0);
       CHECK(st == WA_OK && tt[0] < 0 && tt[2] == 0 && close_to(hh[1], 2 * dcod, 1e-12) &&
                hh[0] > 0 && hh[0] < hh[1] && hh[2] > hh[1],
             "md no contact: status %d traction %g %g gap %g %g %g", st, tt[0], tt[2], hh[0],
@@ -1063,7 +1063,7 @@ static void test_profile(void) {
    {
       double xs[2] = {0.1, 0.2}, tt[2], hh[2];
       wa_equilibrium_gap(WA_MODEL_DW, 0.3, 1.0, 0.2, &c, &p, &z, &g);
-      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c + 1e-7, 2, xs, tt, hh);
+      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c + 1e-7, 2, xs, tt, hh, NULL, 0);
       CHECK(st == WA_OK, "profile within 1e-6 of c*: status %d", st);
       st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c + 1e-3, 2, xs, tt, hh, msg, sizeof msg);
       CHECK(st == WA_NO_SOLUTION && isnan(tt[0]) && isnan(tt[1]) && isnan(hh[0]) &&
@@ -1086,7 +1086,7 @@ static void test_profile(void) {
       xs[1] = NAN;
       st = wa_profile_msg(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 2, xs, tt, hh, msg, sizeof msg);
       CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "x_star[1]"), "x NaN: %d '%s'", st, msg);
-      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 0, NULL, NULL, NULL);
+      st = wa_profile(WA_MODEL_DW, 0.3, 1.0, 0.2, c, 0, NULL, NULL, NULL, NULL, 0);
       CHECK(st == WA_OK, "n = 0 identifies the state: %d", st);
       st = wa_profile_msg(7, 0.3, 1.0, 0.2, c, 0, NULL, NULL, NULL, msg, sizeof msg);
       CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "model"), "model 7: %d '%s'", st, msg);
@@ -1094,7 +1094,7 @@ static void test_profile(void) {
    /* JKR: -Infinity exactly at the contact edge, finite elsewhere */
    {
       double xs[3] = {0.2, -0.2, 0.1}, tt[3], hh[3];
-      st = wa_profile(WA_MODEL_JKR, 0.3, 1.0, 0.2, 0.2, 3, xs, tt, hh);
+      st = wa_profile(WA_MODEL_JKR, 0.3, 1.0, 0.2, 0.2, 3, xs, tt, hh, NULL, 0);
       CHECK(st == WA_OK && tt[0] == -INFINITY && tt[1] == -INFINITY && isfinite(tt[2]) &&
                hh[0] == 0, "jkr edge: %d %g %g %g", st, tt[0], tt[1], tt[2]);
    }
@@ -1110,7 +1110,7 @@ static void test_gap_path(void) {
    double a[16], c[16], p[16], g[16], w = -1, wf = -1, gt = -1;
    int stage[16], ev[16], zc[16], n = -1, k, st, m, same = 1;
    char msg[256];
-   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
    CHECK(st == WA_OK && n == 14, "md gap path (0.3, 1): st %d n %d (want 14)", st, n);
    for (k = 0; k < 14 && n == 14; k++)
       same = same && stage[k] == want_stage[k] && ev[k] == want_event[k];
@@ -1125,22 +1125,22 @@ static void test_gap_path(void) {
       a[k] = -7;
       ev[k] = -7;
    }
-   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 3, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 3, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
    CHECK(st == WA_CAPACITY_TOO_SMALL && n == 14 && ev[2] == 4 && ev[3] == -7 && a[3] == -7 &&
             w > 0 && close_to(gt, 1.3187975707547834, 1e-12),
          "gap path capacity 3: st %d n %d", st, n);
    st = wa_gap_path(WA_MODEL_WESTERGAARD, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, NULL,
-                    NULL, &n, &w, &wf, &gt);
+                    NULL, &n, &w, &wf, &gt, NULL, 0);
    CHECK(st == WA_CAPACITY_TOO_SMALL && n == 6 && w == 0.0 && wf == 0.0 && gt == 1.0,
          "westergaard gap path count: st %d n %d W* %g g_touch %g", st, n, w, gt);
    st = wa_gap_path(WA_MODEL_WESTERGAARD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w,
-                    &wf, &gt);
+                    &wf, &gt, NULL, 0);
    CHECK(st == WA_OK && n == 6 && ev[3] == WA_GAP_EVENT_CONTACT_LOST && g[3] == 1.0 &&
             stage[3] == WA_STAGE_RETRACTION && ev[0] == WA_GAP_EVENT_TOUCH,
          "westergaard gap path: contact lost at gbar* = 1");
    for (m = 0; m < 4; m++) {
       int md = models[m];
-      st = wa_gap_path(md, 0.3, 5.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+      st = wa_gap_path(md, 0.3, 5.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
       CHECK(st == WA_OK && n >= 6 && ev[0] == WA_GAP_EVENT_TOUCH &&
                ev[n - 1] == WA_GAP_EVENT_INTERACTION_LOST && w >= 0,
             "model %d gap path (0.3, 5): st %d n %d", md, st, n);
@@ -1150,36 +1150,36 @@ static void test_gap_path(void) {
                   "model %d: jump %d keeps gbar*", md, k);
       n = 3;
       w = wf = gt = 0;
-      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, NULL, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, NULL, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT && isnan(w) && isnan(wf) && isnan(gt),
             "NULL n_events");
-      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, NULL, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, NULL, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT && n == 0 && isnan(wf) && isnan(gt),
             "NULL W_star");
-      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, NULL) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, NULL, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL g_touch");
-      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, NULL, a, c, p, g, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, NULL, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL zone_case");
-      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, NULL, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, 16, stage, ev, zc, a, c, p, NULL, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "NULL gbar");
-      CHECK(wa_gap_path(md, 0.3, 1.0, -1, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, 1.0, -1, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "capacity -1");
       n = 3;
-      CHECK(wa_gap_path(md, 0.0, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.0, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT && n == 0 && isnan(w) && isnan(gt),
             "model %d alpha = 0", md);
-      CHECK(wa_gap_path(md, 0.3, -1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, 0.3, -1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "mu < 0");
-      CHECK(wa_gap_path(md, NAN, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+      CHECK(wa_gap_path(md, NAN, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
                WA_INVALID_ARGUMENT,
             "alpha NaN");
    }
-   CHECK(wa_gap_path(7, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt) ==
+   CHECK(wa_gap_path(7, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0) ==
             WA_INVALID_ARGUMENT,
          "model 7");
    st = wa_gap_path_msg(WA_MODEL_MD, 0.3, 1.0, 3, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt,
@@ -1202,7 +1202,7 @@ static void test_gap_law(void) {
    for (k = 0; k < 6; k++) gb[k] = 0.1 + 0.15 * k;
    gb[6] = 1.5;
    gb[7] = 0.0;
-   st = wa_gap_law(WA_MODEL_WESTERGAARD, 0.3, 1.0, 8, gb, pa, pr, da, dr);
+   st = wa_gap_law(WA_MODEL_WESTERGAARD, 0.3, 1.0, 8, gb, pa, pr, da, dr, NULL, 0);
    CHECK(st == WA_OK, "westergaard gap law: st %d", st);
    for (k = 0; k < 6 && st == WA_OK; k++)
       CHECK(pa[k] == pr[k] && close_to(1 - pa[k] + pa[k] * log(pa[k]), gb[k], 1e-9),
@@ -1210,20 +1210,20 @@ static void test_gap_law(void) {
    CHECK(pa[6] == 0 && pr[6] == 0 && da[6] == 0 && pa[7] == 1.0 && isinf(da[7]) && da[7] < 0,
          "westergaard: P* = 0 apart, full contact at gbar* = 0");
    /* MD: the law at the gbar* of retraction events that are not jumps gives their P* */
-   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   st = wa_gap_path(WA_MODEL_MD, 0.3, 1.0, 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
    gb[0] = g[10];       /* contact lost (gradual) */
    gb[1] = g[3];        /* contact made on approach (gradual) */
    gb[2] = 0.5 * (g[0] + g[13]);   /* between touch and interaction lost: apart on approach */
-   st = wa_gap_law(WA_MODEL_MD, 0.3, 1.0, 3, gb, pa, pr, da, dr);
+   st = wa_gap_law(WA_MODEL_MD, 0.3, 1.0, 3, gb, pa, pr, da, dr, NULL, 0);
    CHECK(st == WA_OK && close_to(pr[0], p[10], 1e-9) && close_to(pa[1], p[3], 1e-9) &&
             pa[2] == 0.0 && pr[2] < 0.0,
          "md gap law at the events: %.17g %.17g / %.17g %.17g", pr[0], p[10], pa[1], p[3]);
    /* n = 0 checks the arguments only; failures write NaN everywhere */
-   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL) == WA_OK, "n = 0");
-   CHECK(wa_gap_law(WA_MODEL_DW, -0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL) ==
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, NULL, 0) == WA_OK, "n = 0");
+   CHECK(wa_gap_law(WA_MODEL_DW, -0.3, 1.0, 0, NULL, NULL, NULL, NULL, NULL, NULL, 0) ==
             WA_INVALID_ARGUMENT,
          "n = 0 still checks alpha");
-   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, -1, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, -1, gb, pa, pr, da, dr, NULL, 0) == WA_INVALID_ARGUMENT,
          "n = -1");
    gb[0] = 0.5;
    gb[1] = -0.25;
@@ -1236,18 +1236,18 @@ static void test_gap_law(void) {
    st = wa_gap_law_msg(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr, msg, sizeof msg);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "gbar[1]"), "gbar[1] NaN: '%s'", msg);
    gb[1] = INFINITY;
-   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, pr, da, dr, NULL, 0) == WA_INVALID_ARGUMENT,
          "gbar[1] infinite");
    gb[1] = 0.25;
    pa[0] = 3;
-   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, NULL, da, dr) == WA_INVALID_ARGUMENT &&
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, gb, pa, NULL, da, dr, NULL, 0) == WA_INVALID_ARGUMENT &&
             isnan(pa[0]) && isnan(pa[1]),
          "NULL P_retract, P_approach NaN");
-   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, NULL, pa, pr, da, dr) == WA_INVALID_ARGUMENT,
+   CHECK(wa_gap_law(WA_MODEL_DW, 0.3, 1.0, 2, NULL, pa, pr, da, dr, NULL, 0) == WA_INVALID_ARGUMENT,
          "NULL gbar");
    st = wa_gap_law_msg(WA_MODEL_MD, 0.3, NAN, 2, gb, pa, pr, da, dr, msg, sizeof msg);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu") && isnan(pr[1]), "mu NaN: '%s'", msg);
-   CHECK(wa_gap_law(5, 0.3, 1.0, 2, gb, pa, pr, da, dr) == WA_INVALID_ARGUMENT, "model 5");
+   CHECK(wa_gap_law(5, 0.3, 1.0, 2, gb, pa, pr, da, dr, NULL, 0) == WA_INVALID_ARGUMENT, "model 5");
 }
 
 /* Regression (issue item 5a): wa_gap_law_msg returned WA_OK with a stale message ("gap_path:
@@ -1268,11 +1268,11 @@ static void test_gap_law_message_on_ok(void) {
    memset(msg, 'x', sizeof msg);
    st = wa_gap_law_msg(WA_MODEL_DW, alpha, mu, 0, NULL, NULL, NULL, NULL, NULL, msg, sizeof msg);
    CHECK(st == WA_OK && msg[0] == '\0', "gap law n = 0: st %d message '%.80s'", st, msg);
-   st2 = wa_gap_law(WA_MODEL_DW, alpha, mu, 3, gb, pa2, pr2, da2, dr2);
+   st2 = wa_gap_law(WA_MODEL_DW, alpha, mu, 3, gb, pa2, pr2, da2, dr2, NULL, 0);
    CHECK(st2 == WA_OK && !memcmp(pa, pa2, sizeof pa) && !memcmp(pr, pr2, sizeof pr) &&
             !memcmp(da, da2, sizeof da) && !memcmp(dr, dr2, sizeof dr),
          "gap law: _msg and plain differ (st %d)", st2);
-   st = wa_gap_path(WA_MODEL_DW, alpha, mu, 64, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
+   st = wa_gap_path(WA_MODEL_DW, alpha, mu, 64, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
    for (k = 0; k < n && ev[k] != WA_GAP_EVENT_FULL_CONTACT_REACHED; k++) continue;
    CHECK(st == WA_OK && k < n && g[k] == 0.0 && pa[0] == p[k] && pr[0] == p[k],
          "gap law at gbar* 0: %.17g %.17g, full contact reached at P* %.17g", pa[0], pr[0],
@@ -1285,21 +1285,21 @@ static void test_gap_critical(void) {
    int stage[16], ev[16], zc[16], n, k, m, st;
    static const double mus[3] = {0.3, 1.0, 5.0};
    char msg[256];
-   st = wa_gap_critical(WA_MODEL_WESTERGAARD, 0.3, 1.0, v);
+   st = wa_gap_critical(WA_MODEL_WESTERGAARD, 0.3, 1.0, v, NULL, 0);
    CHECK(st == WA_OK && v[WA_GAP_CRITICAL_G_TOUCH] == 1.0 && v[WA_GAP_CRITICAL_P_JUMP_IN] == 0 &&
             v[WA_GAP_CRITICAL_G_CONTACT] == 1.0 && v[WA_GAP_CRITICAL_G_CONTACT_LOST] == 1.0 &&
             v[WA_GAP_CRITICAL_G_INTERACTION_LOST] == 1.0 && v[WA_GAP_CRITICAL_P_MIN] == 0.0,
          "westergaard: no jump, contact made and lost at gbar* = 1, P_min = 0");
-   st = wa_gap_critical(WA_MODEL_JKR, 0.3, 1.0, v);
+   st = wa_gap_critical(WA_MODEL_JKR, 0.3, 1.0, v, NULL, 0);
    CHECK(st == WA_OK && isinf(v[WA_GAP_CRITICAL_P_MIN]) && v[WA_GAP_CRITICAL_P_MIN] < 0 &&
             v[WA_GAP_CRITICAL_G_P_MIN] == 0.0 && v[WA_GAP_CRITICAL_P_JUMP_IN] < 0,
          "jkr: P_min = -inf at gbar* = 0, a jump-in");
    for (m = 2; m < 4; m++)
       for (k = 0; k < 3; k++) {
          int i, last_loss = -1;
-         st = wa_gap_critical(models[m], 0.3, mus[k], v);
-         wa_gap_path(models[m], 0.3, mus[k], 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt);
-         wa_critical_forces(models[m], 0.3, mus[k], &fc, &pf);
+         st = wa_gap_critical(models[m], 0.3, mus[k], v, NULL, 0);
+         wa_gap_path(models[m], 0.3, mus[k], 16, stage, ev, zc, a, c, p, g, &n, &w, &wf, &gt, NULL, 0);
+         wa_critical_forces(models[m], 0.3, mus[k], &fc, &pf, NULL, 0);
          CHECK(st == WA_OK && v[WA_GAP_CRITICAL_G_TOUCH] == gt &&
                   v[WA_GAP_CRITICAL_G_INTERACTION_LOST] == g[n - 1],
                "model %d mu %g: g_touch and interaction lost are the path's", models[m], mus[k]);
@@ -1321,21 +1321,192 @@ static void test_gap_critical(void) {
                   "jump-in lands on the path's event");
          /* the gap law on retraction at gbar*(P_min) is P_min */
          gb[0] = v[WA_GAP_CRITICAL_G_P_MIN];
-         st = wa_gap_law(models[m], 0.3, mus[k], 1, gb, pa, pr, da, dr);
+         st = wa_gap_law(models[m], 0.3, mus[k], 1, gb, pa, pr, da, dr, NULL, 0);
          CHECK(st == WA_OK && close_to(pr[0], v[WA_GAP_CRITICAL_P_MIN], 1e-8),
                "model %d mu %g: gap law at gbar*(P_min) %.17g vs %.17g", models[m], mus[k],
                pr[0], v[WA_GAP_CRITICAL_P_MIN]);
       }
    for (k = 0; k < WA_GAP_CRITICAL_COUNT; k++) v[k] = 1;
-   CHECK(wa_gap_critical(WA_MODEL_DW, -1.0, 1.0, v) == WA_INVALID_ARGUMENT && isnan(v[0]) &&
+   CHECK(wa_gap_critical(WA_MODEL_DW, -1.0, 1.0, v, NULL, 0) == WA_INVALID_ARGUMENT && isnan(v[0]) &&
             isnan(v[WA_GAP_CRITICAL_COUNT - 1]),
          "alpha < 0: NaN values");
-   CHECK(wa_gap_critical(WA_MODEL_DW, 0.3, 1.0, NULL) == WA_INVALID_ARGUMENT, "NULL values");
-   CHECK(wa_gap_critical(-1, 0.3, 1.0, v) == WA_INVALID_ARGUMENT && isnan(v[3]), "model -1");
+   CHECK(wa_gap_critical(WA_MODEL_DW, 0.3, 1.0, NULL, NULL, 0) == WA_INVALID_ARGUMENT, "NULL values");
+   CHECK(wa_gap_critical(-1, 0.3, 1.0, v, NULL, 0) == WA_INVALID_ARGUMENT && isnan(v[3]), "model -1");
    st = wa_gap_critical_msg(WA_MODEL_MD, 0.3, INFINITY, v, msg, sizeof msg);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu") && isnan(v[4]), "mu inf: '%s'", msg);
    st = wa_gap_critical_msg(WA_MODEL_MD, 0.3, 1.0, v, msg, sizeof msg);
    CHECK(st == WA_OK && msg[0] == '\0', "empty message on success");
+}
+
+/* ------------------------------------------------- 0.2 compatibility names */
+
+/* Same bits (NaN included) in n doubles / ints; same text. */
+static int same_d(const double *x, const double *y, int n) {
+   return n <= 0 || memcmp(x, y, (size_t)n * sizeof *x) == 0;
+}
+static int same_i(const int *x, const int *y, int n) {
+   return n <= 0 || memcmp(x, y, (size_t)n * sizeof *x) == 0;
+}
+
+/* Every 0.2 name (removed in 0.4) is its 0.3 function with the 0.2 arguments, bit for bit:
+   statuses, every output (the failure values too) and messages, on valid calls, invalid
+   ones and too small capacities. The _gap names require gbar (the 0.3 functions take
+   NULL); wa_critical_sweep_status requires row_status; wa_adhesion_map_control is
+   wa_adhesion_map with n_mu = 60. */
+static void test_compat_forwards(void) {
+   enum { CAP = 400 };
+   static const struct { int model; double alpha, mu, a; } pt[] = {
+      {WA_MODEL_DW, 0.3, 1.0, 0.2}, {WA_MODEL_MD, 0.3, 1.0, 0.3}, {WA_MODEL_JKR, 0.3, 1.0, 0.5},
+      {WA_MODEL_DW, 0.3, 1.0, 0.0}, {WA_MODEL_DW, -1.0, 1.0, 0.2}, {7, 0.3, 1.0, 0.2}};
+   static double a1[CAP], c1[CAP], p1[CAP], g1[CAP], a2[CAP], c2[CAP], p2[CAP], g2[CAP];
+   static int z1[CAP], s1[CAP], e1[CAP], z2[CAP], s2[CAP], e2[CAP];
+   char m1[256], m2[256];
+   int k, j, st1, st2, n1, n2, caps[3] = {CAP, 1, 0};
+   for (k = 0; k < (int)(sizeof pt / sizeof pt[0]); k++) {
+      int md = pt[k].model;
+      double al = pt[k].alpha, mu = pt[k].mu, a = pt[k].a, x[5] = {-0.5, -0.1, 0.0, 0.2, 3.3};
+      /* wa_equilibrium: _msg (no gbar), _gap and _gap_msg (gbar) */
+      st1 = wa_equilibrium(md, al, mu, a, c1, p1, z1, NULL, m1, sizeof m1);
+      st2 = wa_equilibrium_msg(md, al, mu, a, c2, p2, z2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(c1, c2, 1) && same_d(p1, p2, 1) && same_i(z1, z2, 1) &&
+               !strcmp(m1, m2), "point %d: wa_equilibrium_msg differs (%d %d)", k, st1, st2);
+      st1 = wa_equilibrium(md, al, mu, a, c1, p1, z1, g1, m1, sizeof m1);
+      st2 = wa_equilibrium_gap_msg(md, al, mu, a, c2, p2, z2, g2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(c1, c2, 1) && same_d(p1, p2, 1) && same_i(z1, z2, 1) &&
+               same_d(g1, g2, 1) && !strcmp(m1, m2),
+            "point %d: wa_equilibrium_gap_msg differs (%d %d)", k, st1, st2);
+      st2 = wa_equilibrium_gap(md, al, mu, a, c2, p2, z2, g2);
+      CHECK(st1 == st2 && same_d(c1, c2, 1) && same_d(p1, p2, 1) && same_d(g1, g2, 1),
+            "point %d: wa_equilibrium_gap differs (%d %d)", k, st1, st2);
+      CHECK(wa_equilibrium_gap(md, al, mu, a, c2, p2, z2, NULL) == WA_INVALID_ARGUMENT,
+            "point %d: wa_equilibrium_gap requires gbar", k);
+      /* wa_roots: full, too small and count-only capacities */
+      for (j = 0; j < 3; j++) {
+         int cap = caps[j], w;
+         n1 = n2 = -1;
+         st1 = wa_roots(md, al, mu, a, cap, c1, p1, z1, NULL, &n1, m1, sizeof m1);
+         st2 = wa_roots_msg(md, al, mu, a, cap, c2, p2, z2, &n2, m2, sizeof m2);
+         w = n1 < cap ? n1 : cap;
+         CHECK(st1 == st2 && n1 == n2 && same_d(c1, c2, w) && same_d(p1, p2, w) &&
+                  same_i(z1, z2, w) && !strcmp(m1, m2),
+               "point %d cap %d: wa_roots_msg differs (%d %d)", k, cap, st1, st2);
+         st1 = wa_roots(md, al, mu, a, cap, c1, p1, z1, g1, &n1, m1, sizeof m1);
+         st2 = wa_roots_gap_msg(md, al, mu, a, cap, c2, p2, z2, g2, &n2, m2, sizeof m2);
+         w = n1 < cap ? n1 : cap;
+         CHECK(st1 == st2 && n1 == n2 && same_d(c1, c2, w) && same_d(g1, g2, w) &&
+                  !strcmp(m1, m2),
+               "point %d cap %d: wa_roots_gap_msg differs (%d %d)", k, cap, st1, st2);
+         st2 = wa_roots_gap(md, al, mu, a, cap, c2, p2, z2, g2, &n2);
+         CHECK(st1 == st2 && n1 == n2 && same_d(p1, p2, w) && same_d(g1, g2, w),
+               "point %d cap %d: wa_roots_gap differs (%d %d)", k, cap, st1, st2);
+      }
+      CHECK(wa_roots_gap(md, al, mu, a, 4, c2, p2, z2, NULL, &n2) == WA_INVALID_ARGUMENT,
+            "point %d: wa_roots_gap requires gbar", k);
+      /* wa_profile */
+      st1 = wa_equilibrium(md, al, mu, a, c1, p1, z1, NULL, NULL, 0);
+      st1 = wa_profile(md, al, mu, a, st1 == WA_OK ? c1[0] : 0.3, 5, x, p1, g1, m1, sizeof m1);
+      st2 = wa_profile_msg(md, al, mu, a, st1 == WA_OK ? c1[0] : 0.3, 5, x, p2, g2, m2,
+                           sizeof m2);
+      CHECK(st1 == st2 && same_d(p1, p2, 5) && same_d(g1, g2, 5) && !strcmp(m1, m2),
+            "point %d: wa_profile_msg differs (%d %d)", k, st1, st2);
+   }
+   for (k = 0; k < 3; k++) {
+      int md = k == 2 ? WA_MODEL_MD : WA_MODEL_DW;
+      double al = k == 1 ? NAN : 0.3, mu = 5.0, f1[2], f2[2], w1[3], w2[3];
+      double mus[3] = {0.1, 1.0, 5.0}, v1[WA_GAP_CRITICAL_COUNT], v2[WA_GAP_CRITICAL_COUNT];
+      double q1[6], q2[6];
+      int r1[3], r2[3], w;
+      /* wa_trace_branch: _msg, _gap, _gap_msg; a too small capacity */
+      for (j = 0; j < 2; j++) {
+         int cap = j == 0 ? CAP : 10;
+         st1 = wa_trace_branch(md, al, mu, cap, a1, c1, p1, z1, s1, e1, NULL, &n1, m1, sizeof m1);
+         st2 = wa_trace_branch_msg(md, al, mu, cap, a2, c2, p2, z2, s2, e2, &n2, m2, sizeof m2);
+         w = n1 < cap ? n1 : cap;
+         CHECK(st1 == st2 && n1 == n2 && same_d(a1, a2, w) && same_d(c1, c2, w) &&
+                  same_d(p1, p2, w) && same_i(z1, z2, w) && same_i(s1, s2, w) &&
+                  same_i(e1, e2, w) && !strcmp(m1, m2),
+               "case %d cap %d: wa_trace_branch_msg differs (%d %d)", k, cap, st1, st2);
+         st1 = wa_trace_branch(md, al, mu, cap, a1, c1, p1, z1, s1, e1, g1, &n1, m1, sizeof m1);
+         st2 = wa_trace_branch_gap_msg(md, al, mu, cap, a2, c2, p2, z2, s2, e2, g2, &n2, m2,
+                                       sizeof m2);
+         CHECK(st1 == st2 && n1 == n2 && same_d(a1, a2, w) && same_d(g1, g2, w) &&
+                  !strcmp(m1, m2),
+               "case %d cap %d: wa_trace_branch_gap_msg differs (%d %d)", k, cap, st1, st2);
+         st2 = wa_trace_branch_gap(md, al, mu, cap, a2, c2, p2, z2, s2, e2, g2, &n2);
+         CHECK(st1 == st2 && n1 == n2 && same_d(p1, p2, w) && same_d(g1, g2, w),
+               "case %d cap %d: wa_trace_branch_gap differs (%d %d)", k, cap, st1, st2);
+      }
+      CHECK(wa_trace_branch_gap(md, 0.3, mu, 4, a2, c2, p2, z2, s2, e2, NULL, &n2) ==
+               WA_INVALID_ARGUMENT, "case %d: wa_trace_branch_gap requires gbar", k);
+      /* critical forces, load path, sweep (row_status NULL / required) */
+      st1 = wa_critical_forces(md, al, mu, &f1[0], &f1[1], m1, sizeof m1);
+      st2 = wa_critical_forces_msg(md, al, mu, &f2[0], &f2[1], m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(f1, f2, 2) && !strcmp(m1, m2),
+            "case %d: wa_critical_forces_msg differs (%d %d)", k, st1, st2);
+      for (j = 0; j < 2; j++) {
+         int cap = j == 0 ? 64 : 2;
+         st1 = wa_load_path(md, al, mu, cap, z1, e1, a1, c1, p1, &n1, &f1[0], &f1[1], m1,
+                            sizeof m1);
+         st2 = wa_load_path_msg(md, al, mu, cap, z2, e2, a2, c2, p2, &n2, &f2[0], &f2[1], m2,
+                                sizeof m2);
+         w = n1 < cap ? n1 : cap;
+         CHECK(st1 == st2 && n1 == n2 && same_i(z1, z2, w) && same_i(e1, e2, w) &&
+                  same_d(a1, a2, w) && same_d(p1, p2, w) && same_d(f1, f2, 2) &&
+                  !strcmp(m1, m2),
+               "case %d cap %d: wa_load_path_msg differs (%d %d)", k, cap, st1, st2);
+      }
+      if (k == 1) mus[1] = -1.0;                 /* an invalid mu as well */
+      st1 = wa_critical_sweep(md, 0.3, 3, mus, c1, p1, z1, s1, NULL, m1, sizeof m1);
+      st2 = wa_critical_sweep_msg(md, 0.3, 3, mus, c2, p2, z2, s2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(c1, c2, 3) && same_d(p1, p2, 3) && same_i(z1, z2, 3) &&
+               same_i(s1, s2, 3) && !strcmp(m1, m2),
+            "case %d: wa_critical_sweep_msg differs (%d %d)", k, st1, st2);
+      st1 = wa_critical_sweep(md, 0.3, 3, mus, c1, p1, z1, s1, r1, m1, sizeof m1);
+      st2 = wa_critical_sweep_status(md, 0.3, 3, mus, c2, p2, z2, s2, r2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(c1, c2, 3) && same_i(s1, s2, 3) && same_i(r1, r2, 3) &&
+               !strcmp(m1, m2),
+            "case %d: wa_critical_sweep_status differs (%d %d)", k, st1, st2);
+      CHECK(wa_critical_sweep_status(md, 0.3, 3, mus, c2, p2, z2, s2, NULL, NULL, 0) ==
+               WA_INVALID_ARGUMENT, "case %d: wa_critical_sweep_status requires row_status", k);
+      /* gap control */
+      for (j = 0; j < 2; j++) {
+         int cap = j == 0 ? 64 : 3;
+         st1 = wa_gap_path(md, al, 1.0, cap, z1, e1, s1, a1, c1, p1, g1, &n1, &w1[0], &w1[1],
+                           &w1[2], m1, sizeof m1);
+         st2 = wa_gap_path_msg(md, al, 1.0, cap, z2, e2, s2, a2, c2, p2, g2, &n2, &w2[0],
+                               &w2[1], &w2[2], m2, sizeof m2);
+         w = n1 < cap ? n1 : cap;
+         CHECK(st1 == st2 && n1 == n2 && same_i(z1, z2, w) && same_i(e1, e2, w) &&
+                  same_i(s1, s2, w) && same_d(a1, a2, w) && same_d(c1, c2, w) &&
+                  same_d(p1, p2, w) && same_d(g1, g2, w) && same_d(w1, w2, 3) &&
+                  !strcmp(m1, m2),
+               "case %d cap %d: wa_gap_path_msg differs (%d %d)", k, cap, st1, st2);
+      }
+      for (j = 0; j < 6; j++) a1[j] = 0.25 * j - (k == 1 ? 0.5 : 0.0);
+      st1 = wa_gap_law(md, 0.3, 1.0, 6, a1, c1, p1, g1, q1, m1, sizeof m1);
+      st2 = wa_gap_law_msg(md, 0.3, 1.0, 6, a1, c2, p2, g2, q2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(c1, c2, 6) && same_d(p1, p2, 6) && same_d(g1, g2, 6) &&
+               same_d(q1, q2, 6) && !strcmp(m1, m2),
+            "case %d: wa_gap_law_msg differs (%d %d)", k, st1, st2);
+      st1 = wa_gap_critical(md, al, 1.0, v1, m1, sizeof m1);
+      st2 = wa_gap_critical_msg(md, al, 1.0, v2, m2, sizeof m2);
+      CHECK(st1 == st2 && same_d(v1, v2, WA_GAP_CRITICAL_COUNT) && !strcmp(m1, m2),
+            "case %d: wa_gap_critical_msg differs (%d %d)", k, st1, st2);
+   }
+   /* the map: wa_adhesion_map_control is wa_adhesion_map at n_mu = 60, both controls */
+   for (k = 0; k < 3; k++) {
+      const double alpha[2] = {0.3, 0.31};
+      int control = k == 2 ? 4 : k + 1, w;
+      st1 = wa_adhesion_map(WA_MODEL_DW, control, 2, alpha, 1e-2, 1e2, 60, CAP, z1, a1, c1, &n1,
+                            m1, sizeof m1);
+      st2 = wa_adhesion_map_control(WA_MODEL_DW, control, 2, alpha, 1e-2, 1e2, CAP, z2, a2, c2,
+                                    &n2);
+      w = n1 < CAP ? n1 : CAP;
+      CHECK(st1 == st2 && n1 == n2 && same_i(z1, z2, w) && same_d(a1, a2, w) &&
+               same_d(c1, c2, w) && (st1 == WA_OK) == (m1[0] == 0),
+            "control %d: wa_adhesion_map_control differs (%d %d, %d %d points, '%s')", control,
+            st1, st2, n1, n2, m1);
+   }
 }
 
 int main(void) {
@@ -1369,6 +1540,7 @@ int main(void) {
    test_gap_law();
    test_gap_law_message_on_ok();
    test_gap_critical();
+   test_compat_forwards();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

@@ -45,8 +45,10 @@ python3 - "$prefix/lib/libwavyadhesion.so" <<'EOF'
 import ctypes, sys
 lib = ctypes.CDLL(sys.argv[1])
 c, p, zone = ctypes.c_double(), ctypes.c_double(), ctypes.c_int()
-lib.wa_equilibrium.argtypes = [ctypes.c_int] + [ctypes.c_double] * 3 + [ctypes.c_void_p] * 3
-st = lib.wa_equilibrium(2, 0.3, 1.0, 0.2, ctypes.byref(c), ctypes.byref(p), ctypes.byref(zone))
+lib.wa_equilibrium.argtypes = ([ctypes.c_int] + [ctypes.c_double] * 3 + [ctypes.c_void_p] * 5
+                               + [ctypes.c_int])
+st = lib.wa_equilibrium(2, 0.3, 1.0, 0.2, ctypes.byref(c), ctypes.byref(p), ctypes.byref(zone),
+                        None, None, 0)
 c_ref, p_ref = 0.32795133117893904447, 0.17439576801132992591
 print(f"ctypes: c* = {c.value:.16f}  P* = {p.value:.16f}")
 if st != 0 or abs(c.value - c_ref) > 1e-12 * c_ref or abs(p.value - p_ref) > 1e-12 * p_ref:

@@ -1,7 +1,7 @@
 /* Contract fuzzer of the C interface: `fpm test --profile release --target fuzz`, part of
  * `fpm test` (see doc/testing.md).
  *
- * Calls every function of include/wavyadhesion.h with random and adversarial inputs
+ * Calls every function of include/wavyadhesion.h (the 0.2 compatibility names too) with random and adversarial inputs
  * (NaN, +-Inf, +-0, denormals, huge and tiny values, out-of-range model codes, NULL
  * pointers, capacities 0/1/negative/huge, message buffers of every size) and checks every
  * promise of the header:
@@ -21,7 +21,8 @@
  *    names something, and for WA_INVALID_ARGUMENT an argument the caller passed out of range;
  *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, ...), gap control's P_min
  *    at most every P* of the retraction (gap_path, gap_law, P_pf), a jump keeps gbar*;
- *  - the same call twice (the plain and the _msg variant) gives the same bits;
+ *  - the same call twice (with and without a message, through the 0.3 function or its 0.2
+ *    compatibility name) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
  *    against wa_critical_forces, the closed-form loads against their formulas, wa_gap_critical
  *    against wa_gap_path (g_touch, interaction lost), wa_critical_forces (P_min <= P_pf) and
@@ -72,26 +73,44 @@ enum {
    F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, F_GAP_PATH, F_GAP_LAW,
    F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, N_FAMILY
 };
-/* Function ids: a family and whether the _msg variant is called. */
-#define N_FN (2 * N_FAMILY)
+/* Function ids: a family, whether its 0.2 compatibility name is called (else the 0.3
+   function) and whether a message buffer is passed (4 ids per family). The family's 0.3
+   function, "+gbar": with the optional output (which may still be NULL), "+rows": with
+   row_status. */
+#define N_FN (4 * N_FAMILY)
 static const char *family_name[N_FAMILY] = {
    "wa_westergaard_load", "wa_jkr_load", "wa_equilibrium", "wa_roots", "wa_trace_branch",
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
-   "wa_version", "wa_equilibrium_gap", "wa_roots_gap", "wa_trace_branch_gap", "wa_profile",
-   "wa_gap_path", "wa_gap_law", "wa_gap_critical", "wa_critical_sweep_status",
-   "wa_adhesion_map", "wa_adhesion_map_control"};
-/* 0: no _msg variant; 1: a plain and a _msg variant (half the calls each); 2: the
-   function always takes a message (wa_critical_sweep_status, counted as its "_msg" id). */
+   "wa_version", "wa_equilibrium+gbar", "wa_roots+gbar", "wa_trace_branch+gbar", "wa_profile",
+   "wa_gap_path", "wa_gap_law", "wa_gap_critical", "wa_critical_sweep+rows",
+   "wa_adhesion_map", "wa_adhesion_map(60)"};
+/* The 0.2 compatibility names of each family: [0] without, [1] with a message (NULL:
+   none; the 0.2 base names without a message are gone). */
+static const char *compat_name[N_FAMILY][2] = {
+   {NULL, NULL}, {NULL, NULL}, {NULL, "wa_equilibrium_msg"}, {NULL, "wa_roots_msg"},
+   {NULL, "wa_trace_branch_msg"}, {NULL, "wa_critical_forces_msg"}, {NULL, "wa_load_path_msg"},
+   {NULL, "wa_critical_sweep_msg"}, {NULL, NULL}, {NULL, NULL},
+   {"wa_equilibrium_gap", "wa_equilibrium_gap_msg"}, {"wa_roots_gap", "wa_roots_gap_msg"},
+   {"wa_trace_branch_gap", "wa_trace_branch_gap_msg"}, {NULL, "wa_profile_msg"},
+   {NULL, "wa_gap_path_msg"}, {NULL, "wa_gap_law_msg"}, {NULL, "wa_gap_critical_msg"},
+   {NULL, "wa_critical_sweep_status"}, {NULL, NULL}, {"wa_adhesion_map_control", NULL}};
+/* 0: no message (the closed forms, wa_adhesion_map_control); 1: with and without a message
+   buffer (half the calls each); 2: always with one (wa_critical_sweep_status and the
+   0.3 sweep with row_status). */
 static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 2,
-                                      0, 0};
+                                      1, 0};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
    cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid). */
 static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
                                              8, 96, 24, 16, 16, 16, 1, 1};
 
-/* The printed name of function id fn. */
+/* The printed name of function id fn (the 0.3 functions: " msg" when a buffer is passed). */
+static const char *fn_name(int fn) {
+   const char *compat = (fn / 2) % 2 ? compat_name[fn / 4][fn % 2] : NULL;
+   return compat ? compat : family_name[fn / 4];
+}
 static const char *fn_suffix(int fn) {
-   return fn % 2 && has_msg[fn / 2] == 1 ? "_msg" : "";
+   return (fn / 2) % 2 == 0 && fn % 2 && has_msg[fn / 4] == 1 ? " msg" : "";
 }
 
 /* ----------------------------------------------------------- violation kinds */
@@ -304,7 +323,8 @@ static int gen_msgcap(rng_t *r) {
 
 typedef struct {
    long index;
-   int family, msg; /* msg: the _msg variant */
+   int family, msg; /* msg: a message buffer is passed */
+   int compat;      /* the 0.2 compatibility name (when the family has one for msg) */
    int model, capacity, msgcap, msg_null, code;
    double alpha, mu, a;
    unsigned null_mask; /* bit k: pointer argument k is NULL */
@@ -312,10 +332,31 @@ typedef struct {
    double mus[8];
    double cs;       /* wa_profile: c* (unless `pick` >= 0: a root of wa_roots_gap) */
    int pick, x_bad; /* wa_profile: root index to take c* from; an x* not finite */
-   int control, n_alpha; /* the maps: control (wa_adhesion_map_control), alpha count */
+   int control, n_alpha; /* the maps: control, alpha count (n_mu: the scan's mu) */
    double alphas[4], mu_lo, mu_hi;
    char repro[1024];
 } call_t;
+
+/* Is the call made through the 0.2 name (the family has one with/without a message)? */
+static int use_compat(const call_t *c, int msg) {
+   return c->family == F_MAP_CONTROL || (c->compat && compat_name[c->family][msg] != NULL);
+}
+static int fn_id(const call_t *c) {
+   return 4 * c->family + 2 * use_compat(c, c->msg) + c->msg;
+}
+/* Do the 0.3 function and the 0.2 name share the contract of this call? They differ only
+   where the 0.2 name requires the optional output the call passes as NULL. */
+static int compat_equivalent(const call_t *c) {
+   unsigned nm = c->null_mask;
+   switch (c->family) {
+   case F_EQUILIBRIUM_GAP: return !(nm & 8u);
+   case F_ROOTS_GAP: return !(nm & 16u);
+   case F_TRACE_BRANCH_GAP: return !(nm & 128u);
+   case F_SWEEP_STATUS: return !(nm & 32u);
+   case F_MAP_CONTROL: return 0;
+   }
+   return 1;
+}
 
 /* Output buffers with guards (static: BIG elements each, only touched pages count). */
 #define N_DBUF 5 /* wa_trace_branch_gap: a*, c*, P*, gbar; wa_gap_law: gbar and 4 outputs */
@@ -359,7 +400,7 @@ static int in_child = 0;
 static int known_class(const call_t *c, int kind);
 
 static void violation(const call_t *c, int kind, const char *fmt, ...) {
-   int fn = 2 * c->family + c->msg, kd = opt_strict ? -1 : known_class(c, kind);
+   int fn = fn_id(c), kd = opt_strict ? -1 : known_class(c, kind);
    long *printed;
    va_list ap;
    if (kd >= 0) { /* an open defect of the allow-list: counted, printed, not failing */
@@ -376,7 +417,7 @@ static void violation(const call_t *c, int kind, const char *fmt, ...) {
       printf("KNOWN %s (%s, ", known_defect[kd].name, kind_name[kind]);
    else
       printf("VIOLATION %s%s (", kind_name[kind], kind_severe[kind] ? "" : " [mild]");
-   printf("call %ld, %s%s): ", c->index, family_name[c->family], fn_suffix(fn));
+   printf("call %ld, %s%s): ", c->index, fn_name(fn), fn_suffix(fn));
    va_start(ap, fmt);
    vprintf(fmt, ap);
    va_end(ap);
@@ -412,11 +453,20 @@ static const char *ptr_name(const call_t *c, int k, const char *name) {
 
 static void make_repro(call_t *c) {
    char a1[40], a2[40], a3[40], cap[16], mcap[16], mu[400];
-   const char *sfx = c->msg ? "_msg" : "";
-   char msgpart[64] = "";
+   /* the 0.2 names append "_..." to the 0.3 name (sfx); the 0.3 functions take the
+      optional output (opt, opt2: NULL or the buffer) and always a message */
+   int compat = use_compat(c, c->msg);
+   const char *cn = compat ? compat_name[c->family][c->msg] : NULL;
+   char sfx[32] = "", msgpart[64] = "", opt[16] = "";
    int k;
+   if (compat) strcpy(sfx, cn + strcspn(family_name[c->family], "+("));
    if (c->msg)
       sprintf(msgpart, ", %s, %s", c->msg_null ? "NULL" : "msg", ci(mcap, c->msgcap));
+   else if (!compat)
+      strcpy(msgpart, ", NULL, 0");
+   if (!compat && (c->family == F_EQUILIBRIUM || c->family == F_ROOTS ||
+                   c->family == F_TRACE_BRANCH || c->family == F_CRITICAL_SWEEP))
+      strcpy(opt, ", NULL");
    switch (c->family) {
    case F_WESTERGAARD_LOAD:
       sprintf(c->repro, "wa_westergaard_load(%s)", cd(a1, c->a));
@@ -431,21 +481,21 @@ static void make_repro(call_t *c) {
       strcpy(c->repro, "wa_version()");
       break;
    case F_EQUILIBRIUM:
-      sprintf(c->repro, "wa_equilibrium%s(%d, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+      sprintf(c->repro, "wa_equilibrium%s(%d, %s, %s, %s, %s, %s, %s%s%s)", sfx, c->model,
               cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ptr_name(c, 0, "&c"),
-              ptr_name(c, 1, "&P"), ptr_name(c, 2, "&z"), msgpart);
+              ptr_name(c, 1, "&P"), ptr_name(c, 2, "&z"), opt, msgpart);
       break;
    case F_ROOTS:
-      sprintf(c->repro, "wa_roots%s(%d, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+      sprintf(c->repro, "wa_roots%s(%d, %s, %s, %s, %s, %s, %s, %s%s, %s%s)", sfx, c->model,
               cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ci(cap, c->capacity),
-              ptr_name(c, 0, "c"), ptr_name(c, 1, "P"), ptr_name(c, 2, "z"),
+              ptr_name(c, 0, "c"), ptr_name(c, 1, "P"), ptr_name(c, 2, "z"), opt,
               ptr_name(c, 3, "&n"), msgpart);
       break;
    case F_TRACE_BRANCH:
-      sprintf(c->repro, "wa_trace_branch%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+      sprintf(c->repro, "wa_trace_branch%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s%s, %s%s)", sfx,
               c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
               ptr_name(c, 0, "a"), ptr_name(c, 1, "c"), ptr_name(c, 2, "P"),
-              ptr_name(c, 3, "z"), ptr_name(c, 4, "s"), ptr_name(c, 5, "e"),
+              ptr_name(c, 3, "z"), ptr_name(c, 4, "s"), ptr_name(c, 5, "e"), opt,
               ptr_name(c, 6, "&n"), msgpart);
       break;
    case F_CRITICAL_FORCES:
@@ -462,18 +512,18 @@ static void make_repro(call_t *c) {
               ptr_name(c, 6, "&P_fc"), ptr_name(c, 7, "&P_pf"), msgpart);
       break;
    case F_EQUILIBRIUM_GAP:
-      sprintf(c->repro, "wa_equilibrium_gap%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
+      sprintf(c->repro, "wa_equilibrium%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx, c->model,
               cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ptr_name(c, 0, "&c"),
               ptr_name(c, 1, "&P"), ptr_name(c, 2, "&z"), ptr_name(c, 3, "&g"), msgpart);
       break;
    case F_ROOTS_GAP:
-      sprintf(c->repro, "wa_roots_gap%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+      sprintf(c->repro, "wa_roots%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
               c->model, cd(a1, c->alpha), cd(a2, c->mu), cd(a3, c->a), ci(cap, c->capacity),
               ptr_name(c, 0, "c"), ptr_name(c, 1, "P"), ptr_name(c, 2, "z"),
               ptr_name(c, 4, "g"), ptr_name(c, 3, "&n"), msgpart);
       break;
    case F_TRACE_BRANCH_GAP:
-      sprintf(c->repro, "wa_trace_branch_gap%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+      sprintf(c->repro, "wa_trace_branch%s(%d, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
               sfx, c->model, cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->capacity),
               ptr_name(c, 0, "a"), ptr_name(c, 1, "c"), ptr_name(c, 2, "P"),
               ptr_name(c, 3, "z"), ptr_name(c, 4, "s"), ptr_name(c, 5, "e"),
@@ -510,8 +560,9 @@ static void make_repro(call_t *c) {
       break;
    case F_MAP:
    case F_MAP_CONTROL: {
-      char ctl[32] = "", al[200] = "";
-      if (c->family == F_MAP_CONTROL) sprintf(ctl, ", %s", ci(a1, c->control));
+      char ctl[32] = "", al[200] = "", nmu[24] = "";
+      sprintf(ctl, ", %s", ci(a1, c->control));
+      if (c->family == F_MAP) sprintf(nmu, ", %s", ci(a2, c->n_mu));
       if (c->null_mask & 1u) {
          strcpy(al, "NULL");
       } else {
@@ -522,11 +573,10 @@ static void make_repro(call_t *c) {
          }
          strcat(al, "}");
       }
-      sprintf(c->repro, "wa_adhesion_map%s(%d%s, %s, %s, %s, %s, %s, %s, %s, %s, %s)",
-              c->family == F_MAP_CONTROL ? "_control" : "", c->model, ctl, ci(cap, c->n_alpha),
-              al, cd(a1, c->mu_lo), cd(a2, c->mu_hi), ci(mcap, c->capacity),
-              ptr_name(c, 1, "code"), ptr_name(c, 2, "a"), ptr_name(c, 3, "m"),
-              ptr_name(c, 4, "&n"));
+      sprintf(c->repro, "wa_adhesion_map%s(%d%s, %s, %s, %s, %s%s, %s, %s, %s, %s, %s%s)",
+              sfx, c->model, ctl, ci(cap, c->n_alpha), al, cd(a1, c->mu_lo), cd(a2, c->mu_hi),
+              nmu, ci(a3, c->capacity), ptr_name(c, 1, "code"), ptr_name(c, 2, "a"),
+              ptr_name(c, 3, "m"), ptr_name(c, 4, "&n"), msgpart);
       break;
    }
    case F_SWEEP_STATUS:
@@ -542,15 +592,15 @@ static void make_repro(call_t *c) {
          strcpy(mu, ptr_name(c, 0, "mu"));
       }
       if (c->family == F_SWEEP_STATUS)
-         sprintf(c->repro, "wa_critical_sweep_status(%d, %s, %s, %s, %s, %s, %s, %s, %s%s)",
-                 c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
+         sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+                 sfx, c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
                  ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
                  ptr_name(c, 5, "row_status"), msgpart);
       else
-         sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s%s)", sfx,
+         sprintf(c->repro, "wa_critical_sweep%s(%d, %s, %s, %s, %s, %s, %s, %s%s%s)", sfx,
                  c->model, cd(a1, c->alpha), ci(cap, c->n_mu), mu, ptr_name(c, 1, "P_fc"),
                  ptr_name(c, 2, "P_pf"), ptr_name(c, 3, "fc_mech"), ptr_name(c, 4, "pf_mech"),
-                 msgpart);
+                 opt, msgpart);
       break;
    }
 }
@@ -568,7 +618,7 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    static const double bad_mu[] = {NAN, 0.0, -1.0, INFINITY, -INFINITY, 1e101};
    int k, what;
    valid = valid && unif(r) < 0.25; /* valid maps are slow: an eighth of the calls */
-   what = valid ? -1 : below(r, 8);
+   what = valid ? -1 : below(r, c->family == F_MAP ? 9 : 8);
    c->model = valid || unif(r) < 0.5 ? WA_MODEL_DW + below(r, 2) : gen_model(r);
    c->control = 1 + below(r, 3);
    c->n_alpha = unif(r) < 0.8 ? 1 : 2 + below(r, 2);
@@ -586,10 +636,11 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    c->mu_lo = log_unif(r, 1e-3, 10.0);
    c->mu_hi = c->mu_lo * log_unif(r, 1.5, 1e4);
    c->capacity = unif(r) < 0.7 ? 64 + below(r, 200) : below(r, 6);
+   c->n_mu = c->family == F_MAP_CONTROL || unif(r) < 0.7 ? 60 : 2 + below(r, 99);
    c->null_mask = 0;
    switch (what) {
    case 0:
-      if (unif(r) < 0.5 && c->family == F_MAP_CONTROL)
+      if (unif(r) < 0.5)
          c->control = bad_control[below(r, 5)];
       else
          c->model = (const int[]){WA_MODEL_WESTERGAARD, WA_MODEL_JKR, -1, 4, INT_MIN}[below(r, 5)];
@@ -601,6 +652,7 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    case 5: c->mu_hi = unif(r) < 0.5 ? c->mu_lo : 0.5 * c->mu_lo; break;
    case 6: c->capacity = unif(r) < 0.5 ? -1 : INT_MIN; break;
    case 7: c->null_mask = unif(r) < 0.8 ? 1u << below(r, 5) : (unsigned)next_u64(r) & 0x1Fu; break;
+   case 8: c->n_mu = (const int[]){1, 0, -1, 100001, INT_MIN}[below(r, 5)]; break;
    }
 }
 
@@ -620,6 +672,7 @@ static void gen_call(long index, call_t *c) {
    }
    c->family = k;
    c->msg = has_msg[k] == 2 || (has_msg[k] == 1 && unif(&r) < 0.5);
+   c->compat = k == F_MAP_CONTROL || (compat_name[k][c->msg] != NULL && unif(&r) < 0.5);
    valid = unif(&r) < 0.5; /* half the calls: every argument valid, pointers too */
    c->model = valid ? below(&r, 4) : gen_model(&r);
    if (((k >= F_TRACE_BRANCH && k <= F_CRITICAL_SWEEP) || k == F_TRACE_BRANCH_GAP ||
@@ -815,7 +868,7 @@ static void check_status(const call_t *c, int st, int allowed_mask, int invalid)
 }
 
 static void count_status(const call_t *c, int st) {
-   int fn = 2 * c->family + c->msg;
+   int fn = fn_id(c);
    shm->status_count[fn][st >= 0 && st <= 5 ? st : 6]++;
 }
 
@@ -844,6 +897,8 @@ static uint64_t digest(int st, int used) {
 
 static char *MSG(const call_t *c) { return c->msg_null ? NULL : (char *)mbuf + GUARD; }
 #define P(k, ptr) (((c->null_mask >> (k)) & 1u) ? NULL : (ptr))
+/* The message arguments of a 0.3 function: the buffer when msg, else NULL, 0. */
+#define NMSG(c, msg) ((msg) ? MSG(c) : NULL), ((msg) ? (c)->msgcap : 0)
 
 static int ok_state(double a, double cs, int z) {
    if (!(a >= 0 && a <= 0.5 && cs >= a && cs <= 0.5)) return 0;
@@ -858,19 +913,20 @@ static void lib_call(void) { shm->lib_calls++; }
 
 /* wa_equilibrium[_msg] */
 static int do_equilibrium(const call_t *c, double a, int msg) {
+   int gap = c->family == F_EQUILIBRIUM_GAP || c->family == F_ROOTS_GAP;
    lib_call();
-   if (c->family == F_EQUILIBRIUM_GAP || c->family == F_ROOTS_GAP) {
-      if (msg)
+   if (use_compat(c, msg)) {
+      if (gap && msg)
          return wa_equilibrium_gap_msg(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
                                        P(2, IS(0)), P(3, DS(2)), MSG(c), c->msgcap);
-      return wa_equilibrium_gap(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
-                                P(2, IS(0)), P(3, DS(2)));
-   }
-   if (msg)
+      if (gap)
+         return wa_equilibrium_gap(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
+                                   P(2, IS(0)), P(3, DS(2)));
       return wa_equilibrium_msg(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
                                 P(2, IS(0)), MSG(c), c->msgcap);
-   return wa_equilibrium(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)),
-                         P(2, IS(0)));
+   }
+   return wa_equilibrium(c->model, c->alpha, c->mu, a, P(0, DS(0)), P(1, DS(1)), P(2, IS(0)),
+                         gap ? P(3, DS(2)) : NULL, NMSG(c, msg));
 }
 
 static int run_equilibrium(const call_t *c, int msg) {
@@ -909,7 +965,7 @@ static void check_equilibrium(const call_t *c, int st, int invalid) {
 static int run_roots(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
-   if (c->family == F_ROOTS_GAP) {
+   if (use_compat(c, msg) && c->family == F_ROOTS_GAP) {
       if (msg)
          return wa_roots_gap_msg(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)),
                                  P(1, D(1)), P(2, I(0)), P(4, D(2)), P(3, IS(0)), MSG(c),
@@ -917,11 +973,12 @@ static int run_roots(const call_t *c, int msg) {
       return wa_roots_gap(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)), P(1, D(1)),
                           P(2, I(0)), P(4, D(2)), P(3, IS(0)));
    }
-   if (msg)
+   if (use_compat(c, msg))
       return wa_roots_msg(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)),
                           P(1, D(1)), P(2, I(0)), P(3, IS(0)), MSG(c), c->msgcap);
    return wa_roots(c->model, c->alpha, c->mu, c->a, c->capacity, P(0, D(0)), P(1, D(1)),
-                   P(2, I(0)), P(3, IS(0)));
+                   P(2, I(0)), c->family == F_ROOTS_GAP ? P(4, D(2)) : NULL, P(3, IS(0)),
+                   NMSG(c, msg));
 }
 
 static void check_roots(const call_t *c, int st, int invalid) {
@@ -943,7 +1000,8 @@ static void check_roots(const call_t *c, int st, int invalid) {
             violation(c, K_NONFINITE, "root %d of %d: c* %.17g P* %.17g", k, n, cs, p);
             break;
          }
-         if (c->family == F_ROOTS_GAP && !(isfinite(D(2)[k]) && D(2)[k] >= 0)) {
+         if (c->family == F_ROOTS_GAP && !(c->null_mask & 16u) &&
+             !(isfinite(D(2)[k]) && D(2)[k] >= 0)) {
             violation(c, K_NONFINITE, "root %d of %d: gbar %.17g", k, n, D(2)[k]);
             break;
          }
@@ -966,7 +1024,7 @@ static void check_roots(const call_t *c, int st, int invalid) {
 static int run_branch(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
-   if (c->family == F_TRACE_BRANCH_GAP) {
+   if (use_compat(c, msg) && c->family == F_TRACE_BRANCH_GAP) {
       if (msg)
          return wa_trace_branch_gap_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
                                         P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)),
@@ -975,12 +1033,14 @@ static int run_branch(const call_t *c, int msg) {
                                  P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
                                  P(7, D(3)), P(6, IS(0)));
    }
-   if (msg)
+   if (use_compat(c, msg))
       return wa_trace_branch_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)),
                                  P(1, D(1)), P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
                                  P(6, IS(0)), MSG(c), c->msgcap);
    return wa_trace_branch(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
-                          P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)), P(6, IS(0)));
+                          P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)),
+                          c->family == F_TRACE_BRANCH_GAP ? P(7, D(3)) : NULL, P(6, IS(0)),
+                          NMSG(c, msg));
 }
 
 static void check_branch(const call_t *c, int st, int invalid) {
@@ -1003,7 +1063,8 @@ static void check_branch(const call_t *c, int st, int invalid) {
                       cs, p);
             break;
          }
-         if (c->family == F_TRACE_BRANCH_GAP && !(isfinite(D(3)[k]) && D(3)[k] >= 0)) {
+         if (c->family == F_TRACE_BRANCH_GAP && !(c->null_mask & 128u) &&
+             !(isfinite(D(3)[k]) && D(3)[k] >= 0)) {
             violation(c, K_NONFINITE, "point %d of %d: gbar %.17g", k, n, D(3)[k]);
             break;
          }
@@ -1040,9 +1101,9 @@ static void check_branch(const call_t *c, int st, int invalid) {
 /* wa_critical_forces[_msg] */
 static int do_critical(const call_t *c, double mu, int msg, double *fc, double *pf) {
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_critical_forces_msg(c->model, c->alpha, mu, fc, pf, MSG(c), c->msgcap);
-   return wa_critical_forces(c->model, c->alpha, mu, fc, pf);
+   return wa_critical_forces(c->model, c->alpha, mu, fc, pf, NMSG(c, msg));
 }
 
 static int run_critical(const call_t *c, int msg) {
@@ -1080,13 +1141,13 @@ static void check_critical(const call_t *c, int st, int invalid) {
 static int run_path(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_load_path_msg(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
                               P(2, D(0)), P(3, D(1)), P(4, D(2)), P(5, IS(0)), P(6, DS(0)),
                               P(7, DS(1)), MSG(c), c->msgcap);
    return wa_load_path(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
                        P(2, D(0)), P(3, D(1)), P(4, D(2)), P(5, IS(0)), P(6, DS(0)),
-                       P(7, DS(1)));
+                       P(7, DS(1)), NMSG(c, msg));
 }
 
 static void check_path(const call_t *c, int st, int invalid) {
@@ -1149,15 +1210,16 @@ static int run_sweep(const call_t *c, int msg) {
    fill_buffers(n);
    memcpy(D(0), c->mus, n * sizeof(double));
    lib_call();
-   if (c->family == F_SWEEP_STATUS)
+   if (c->family == F_SWEEP_STATUS && use_compat(c, msg))
       return wa_critical_sweep_status(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)),
                                       P(2, D(2)), P(3, I(0)), P(4, I(1)), P(5, I(2)), MSG(c),
                                       c->msgcap);
-   if (msg)
+   if (use_compat(c, msg))
       return wa_critical_sweep_msg(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)),
                                    P(2, D(2)), P(3, I(0)), P(4, I(1)), MSG(c), c->msgcap);
    return wa_critical_sweep(c->model, c->alpha, c->n_mu, P(0, D(0)), P(1, D(1)), P(2, D(2)),
-                            P(3, I(0)), P(4, I(1)));
+                            P(3, I(0)), P(4, I(1)), c->family == F_SWEEP_STATUS ? P(5, I(2)) : NULL,
+                            NMSG(c, msg));
 }
 
 static void check_sweep(const call_t *c, int st, int invalid) {
@@ -1250,22 +1312,21 @@ static void check_row_status(const call_t *c, int st) {
    alpha_out and mu_out in dbuf[0..1], *n_out in iscalar[0]. */
 static double map_alpha[4];
 
-static int run_map(const call_t *c) {
+static int run_map(const call_t *c, int msg) {
    int n = c->n_alpha > 0 ? (c->n_alpha < 4 ? c->n_alpha : 4) : 0;
    fill_buffers(c->capacity);
    memcpy(map_alpha, c->alphas, n * sizeof(double));
    lib_call();
    if (c->family == F_MAP)
-      return wa_adhesion_map(c->model, c->n_alpha, P(0, map_alpha), c->mu_lo, c->mu_hi, c->capacity,
-                             P(1, I(0)), P(2, D(0)), P(3, D(1)), P(4, IS(0)));
+      return wa_adhesion_map(c->model, c->control, c->n_alpha, P(0, map_alpha), c->mu_lo,
+                             c->mu_hi, c->n_mu, c->capacity, P(1, I(0)), P(2, D(0)), P(3, D(1)),
+                             P(4, IS(0)), NMSG(c, msg));
    return wa_adhesion_map_control(c->model, c->control, c->n_alpha, P(0, map_alpha), c->mu_lo,
                                   c->mu_hi, c->capacity, P(1, I(0)), P(2, D(0)), P(3, D(1)),
                                   P(4, IS(0)));
 }
 
-static int map_control_of(const call_t *c) {
-   return c->family == F_MAP ? WA_MAP_CONTROL_LOAD : c->control;
-}
+static int map_control_of(const call_t *c) { return c->control; }
 
 /* A boundary code of the documented form for the control: 100 which + 10 below + above. */
 static int ok_map_code(int code, int control) {
@@ -1331,7 +1392,7 @@ static int run_profile(const call_t *c, int msg) {
       double cs[16], ps[16], gs[16];
       int zs[16], nr = 0;
       lib_call();
-      if (wa_roots_gap(c->model, c->alpha, c->mu, c->a, 16, cs, ps, zs, gs, &nr) == WA_OK &&
+      if (wa_roots(c->model, c->alpha, c->mu, c->a, 16, cs, ps, zs, gs, &nr, NULL, 0) == WA_OK &&
           nr > 0) {
          prof_cs = cs[c->pick % nr];
          prof_picked = 1;
@@ -1341,11 +1402,11 @@ static int run_profile(const call_t *c, int msg) {
    make_x(c, prof_cs, D(0), n);
    memcpy(prof_x, D(0), n * sizeof(double));
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_profile_msg(c->model, c->alpha, c->mu, c->a, prof_cs, c->capacity, P(0, D(0)),
                             P(1, D(1)), P(2, D(2)), MSG(c), c->msgcap);
    return wa_profile(c->model, c->alpha, c->mu, c->a, prof_cs, c->capacity, P(0, D(0)),
-                     P(1, D(1)), P(2, D(2)));
+                     P(1, D(1)), P(2, D(2)), NMSG(c, msg));
 }
 
 static void check_profile(const call_t *c, int st, int invalid) {
@@ -1384,14 +1445,14 @@ static void check_profile(const call_t *c, int st, int invalid) {
 static int run_gap_path(const call_t *c, int msg) {
    fill_buffers(c->capacity);
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_gap_path_msg(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
                              P(2, I(2)), P(3, D(0)), P(4, D(1)), P(5, D(2)), P(6, D(3)),
                              P(7, IS(0)), P(8, DS(0)), P(9, DS(1)), P(10, DS(2)), MSG(c),
                              c->msgcap);
    return wa_gap_path(c->model, c->alpha, c->mu, c->capacity, P(0, I(0)), P(1, I(1)),
                       P(2, I(2)), P(3, D(0)), P(4, D(1)), P(5, D(2)), P(6, D(3)), P(7, IS(0)),
-                      P(8, DS(0)), P(9, DS(1)), P(10, DS(2)));
+                      P(8, DS(0)), P(9, DS(1)), P(10, DS(2)), NMSG(c, msg));
 }
 
 /* Tolerance of "a jump keeps gbar*" (relative). The landing state is solved for the start's
@@ -1500,11 +1561,11 @@ static int run_gap_law(const call_t *c, int msg) {
    make_gbar(c, D(0), n);
    memcpy(law_g, D(0), n * sizeof(double));
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_gap_law_msg(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
                             P(2, D(2)), P(3, D(3)), P(4, D(4)), MSG(c), c->msgcap);
    return wa_gap_law(c->model, c->alpha, c->mu, c->capacity, P(0, D(0)), P(1, D(1)),
-                     P(2, D(2)), P(3, D(3)), P(4, D(4)));
+                     P(2, D(2)), P(3, D(3)), P(4, D(4)), NMSG(c, msg));
 }
 
 static void check_gap_law(const call_t *c, int st, int invalid) {
@@ -1536,9 +1597,9 @@ static void check_gap_law(const call_t *c, int st, int invalid) {
 static int run_gap_critical(const call_t *c, int msg) {
    fill_buffers(WA_GAP_CRITICAL_COUNT);
    lib_call();
-   if (msg)
+   if (use_compat(c, msg))
       return wa_gap_critical_msg(c->model, c->alpha, c->mu, P(0, D(0)), MSG(c), c->msgcap);
-   return wa_gap_critical(c->model, c->alpha, c->mu, P(0, D(0)));
+   return wa_gap_critical(c->model, c->alpha, c->mu, P(0, D(0)), NMSG(c, msg));
 }
 
 static void check_gap_critical(const call_t *c, int st, int invalid) {
@@ -1608,9 +1669,25 @@ static unsigned family_args(int f) {
    not a finite number", "P_fc and P_pf must not be NULL")? */
 static int names_bad_argument(const call_t *c, const char *m) {
    char name[32];
-   int len = 0, idx = -1;
+   int len = 0, idx = -1, k, bad;
    unsigned args = family_args(c->family);
    if (strstr(m, "must not be NULL")) return c->null_mask != 0;
+   if (c->family == F_MAP || c->family == F_MAP_CONTROL) {
+      /* the map's own checks ("adhesion_map: every alpha must be in ...") */
+      if (!strncmp(m, "adhesion_map: ", 14)) m += 14;
+      if (!strncmp(m, "every ", 6)) m += 6;
+      if (!strncmp(m, "model", 5)) return !(c->model == WA_MODEL_DW || c->model == WA_MODEL_MD);
+      if (!strncmp(m, "control", 7)) return c->control < 1 || c->control > 3;
+      if (!strncmp(m, "n_alpha", 7)) return c->n_alpha < 1;
+      if (!strncmp(m, "n_mu", 4)) return c->n_mu < 2 || c->n_mu > 100000;
+      if (!strncmp(m, "capacity", 8)) return c->capacity < 0;
+      if (!strncmp(m, "mu_lo", 5))
+         return !(c->mu_lo >= WA_MU_MIN && c->mu_hi <= WA_MU_MAX && c->mu_lo < c->mu_hi);
+      if (strncmp(m, "alpha", 5)) return 0;
+      for (k = 0, bad = c->n_alpha < 1; k < c->n_alpha && k < 4; k++)
+         bad = bad || !valid_alpha(c->alphas[k]) || (k > 0 && !(c->alphas[k] > c->alphas[k - 1]));
+      return bad;
+   }
    while (len < 31 && (m[len] == '_' || (m[len] >= 'a' && m[len] <= 'z') ||
                        (m[len] >= 'A' && m[len] <= 'Z') || (len > 0 && m[len] >= '0' && m[len] <= '9'))) {
       name[len] = m[len];
@@ -1647,7 +1724,7 @@ static void fetch_message(const call_t *c, int st, const char *msg1) {
    int st2, cap = (int)sizeof full_msg;
    full_msg[0] = 0;
    if (!has_msg[c->family]) return;
-   c2.msg = 1;
+   c2.msg = 1;                /* the _gap names: their _gap_msg twins */
    c2.msg_null = 0;
    c2.msgcap = cap;
    st2 = run_family(&c2, 1);
@@ -1695,7 +1772,7 @@ static int known_class(const call_t *c, int kind) {
 /* Does the header call these arguments invalid (WA_INVALID_ARGUMENT expected)? */
 static int is_invalid(const call_t *c) {
    unsigned nm = c->null_mask;
-   int cap = c->capacity;
+   int cap = c->capacity, compat = use_compat(c, c->msg);
    switch (c->family) {
    case F_EQUILIBRIUM:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
@@ -1711,15 +1788,16 @@ static int is_invalid(const call_t *c) {
    case F_LOAD_PATH:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
              (nm & 0xE0u) || cap < 0 || (cap > 0 && (nm & 31u));
+   /* the 0.2 _gap names require gbar; the 0.3 functions take NULL (not computed) */
    case F_EQUILIBRIUM_GAP:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
-             !valid_a(c->a) || (nm & 15u);
+             !valid_a(c->a) || (nm & (compat ? 15u : 7u));
    case F_ROOTS_GAP:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
-             !valid_a(c->a) || (nm & 8u) || cap < 0 || (cap > 0 && (nm & 23u));
+             !valid_a(c->a) || (nm & 8u) || cap < 0 || (cap > 0 && (nm & (compat ? 23u : 7u)));
    case F_TRACE_BRANCH_GAP:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
-             (nm & 64u) || cap < 0 || (cap > 0 && (nm & 191u));
+             (nm & 64u) || cap < 0 || (cap > 0 && (nm & (compat ? 191u : 63u)));
    case F_PROFILE:
       return !valid_model(c->model) || !valid_alpha(c->alpha) || !valid_mu(c->mu) ||
              !valid_a(c->a) || !(c->cs >= 0 && c->cs <= 0.5) || cap < 0 ||
@@ -1737,8 +1815,8 @@ static int is_invalid(const call_t *c) {
       int k, bad = !(c->model == WA_MODEL_DW || c->model == WA_MODEL_MD) || c->n_alpha < 1 ||
                    (nm & 17u) || cap < 0 || (cap > 0 && (nm & 14u)) ||
                    !(c->mu_lo >= WA_MU_MIN && c->mu_hi <= WA_MU_MAX && c->mu_lo < c->mu_hi);
-      if (c->family == F_MAP_CONTROL)
-         bad = bad || c->control < WA_MAP_CONTROL_LOAD || c->control > WA_MAP_CONTROL_BOTH;
+      bad = bad || c->control < WA_MAP_CONTROL_LOAD || c->control > WA_MAP_CONTROL_BOTH ||
+            c->n_mu < 2 || c->n_mu > 100000;
       for (k = 0; k < c->n_alpha && k < 4; k++)
          bad = bad || !valid_alpha(c->alphas[k]) || (k > 0 && !(c->alphas[k] > c->alphas[k - 1]));
       return bad;
@@ -1746,7 +1824,7 @@ static int is_invalid(const call_t *c) {
    case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
-                   (c->n_mu > 0 && (nm & (c->family == F_SWEEP_STATUS ? 63u : 31u)));
+                   (c->n_mu > 0 && (nm & (c->family == F_SWEEP_STATUS && compat ? 63u : 31u)));
       for (k = 0; k < c->n_mu && !(nm & 1u); k++) bad = bad || !valid_mu(c->mus[k]);
       return bad;
    }
@@ -1776,7 +1854,7 @@ static int run_family(const call_t *c, int msg) {
    case F_CRITICAL_SWEEP: return run_sweep(c, msg);
    case F_SWEEP_STATUS: return run_sweep(c, msg);
    case F_MAP:
-   case F_MAP_CONTROL: return run_map(c);
+   case F_MAP_CONTROL: return run_map(c, msg);
    case F_EQUILIBRIUM_GAP: return run_equilibrium(c, msg);
    case F_ROOTS_GAP: return run_roots(c, msg);
    case F_TRACE_BRANCH_GAP: return run_branch(c, msg);
@@ -1939,7 +2017,8 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
       int sg[64], ev[64], z[64], n = 0, st2, st3, st4, k;
       memcpy(v, D(0), sizeof v);
       lib_call();
-      st2 = wa_gap_path(c->model, c->alpha, c->mu, 64, sg, ev, z, a, cs, p, g, &n, &w, &wf, &gt);
+      st2 = wa_gap_path(c->model, c->alpha, c->mu, 64, sg, ev, z, a, cs, p, g, &n, &w, &wf, &gt,
+                        NULL, 0);
       if (st2 != WA_OK || gt != v[WA_GAP_CRITICAL_G_TOUCH] ||
           g[n - 1] != v[WA_GAP_CRITICAL_G_INTERACTION_LOST])
          violation(c, K_INCONSISTENT, "wa_gap_path: status %d g_touch %.17g (critical %.17g), "
@@ -1953,7 +2032,7 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
                break;
             }
       lib_call();
-      st3 = wa_critical_forces(c->model, c->alpha, c->mu, &fc, &pf);
+      st3 = wa_critical_forces(c->model, c->alpha, c->mu, &fc, &pf, NULL, 0);
       if (st3 == WA_OK && (isinf(pf) ? v[WA_GAP_CRITICAL_P_MIN] != pf
                                      : !pmin_below(v[WA_GAP_CRITICAL_P_MIN], pf)))
          violation(c, K_PMIN, "P_min %.17g above P_pf %.17g", v[4], pf);
@@ -1963,7 +2042,7 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
          gb[1] = v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * 1.5 + 1.0;
          for (k = 2; k < LAW_SAMPLES; k++) gb[k] = v[WA_GAP_CRITICAL_G_INTERACTION_LOST] * unif(r);
          lib_call();
-         st4 = wa_gap_law(c->model, c->alpha, c->mu, LAW_SAMPLES, gb, pa, pr, da, dr);
+         st4 = wa_gap_law(c->model, c->alpha, c->mu, LAW_SAMPLES, gb, pa, pr, da, dr, NULL, 0);
          if (st4 != WA_OK || pa[1] != 0 || pr[1] != 0 || da[1] != 0 || dr[1] != 0 ||
              !(fabs(pr[0] - v[WA_GAP_CRITICAL_P_MIN]) <= 1e-7 * (1 + fabs(pr[0]))))
             violation(c, K_INCONSISTENT, "wa_gap_law: status %d P_retract(gbar*(P_min) = %.17g) "
@@ -1980,33 +2059,33 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
    }
    if (c->family == F_SWEEP_STATUS && st == WA_OK && c->n_mu > 0 && !(c->null_mask & 31u) &&
        unif(r) < 0.3) {
-      /* as wa_critical_sweep_msg: the same rows, bit for bit */
+      /* as the sweep without row_status: the same rows, bit for bit */
       int n = c->n_mu, st2, fm[8], pm[8];
       double fc[8], pf[8];
       lib_call();
-      st2 = wa_critical_sweep(c->model, c->alpha, n, c->mus, fc, pf, fm, pm);
+      st2 = wa_critical_sweep(c->model, c->alpha, n, c->mus, fc, pf, fm, pm, NULL, NULL, 0);
       if (st2 != st || memcmp(fc, D(1), n * sizeof(double)) || memcmp(pf, D(2), n * sizeof(double)) ||
           memcmp(fm, I(0), n * sizeof(int)) || memcmp(pm, I(1), n * sizeof(int)))
          violation(c, K_INCONSISTENT, "wa_critical_sweep: status %d, rows differ", st2);
    }
-   if ((c->family == F_MAP || (c->family == F_MAP_CONTROL && c->control == WA_MAP_CONTROL_LOAD)) &&
+   if ((c->family == F_MAP_CONTROL || c->n_mu == 60) &&
        (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) && !(c->null_mask & 31u) &&
        c->capacity <= FILL && unif(r) < 0.3) {
-      /* wa_adhesion_map_control(WA_MAP_CONTROL_LOAD) is wa_adhesion_map bit for bit */
+      /* wa_adhesion_map_control is wa_adhesion_map with n_mu = 60 bit for bit */
       static int code2[FILL];
       static double a2[FILL], m2[FILL];
       int n2 = -1, n = *IS(0), m = n < c->capacity ? n : c->capacity, st2;
       lib_call();
       if (c->family == F_MAP)
-         st2 = wa_adhesion_map_control(c->model, WA_MAP_CONTROL_LOAD, c->n_alpha, c->alphas,
-                                       c->mu_lo, c->mu_hi, c->capacity, code2, a2, m2, &n2);
+         st2 = wa_adhesion_map_control(c->model, c->control, c->n_alpha, c->alphas, c->mu_lo,
+                                       c->mu_hi, c->capacity, code2, a2, m2, &n2);
       else
-         st2 = wa_adhesion_map(c->model, c->n_alpha, c->alphas, c->mu_lo, c->mu_hi, c->capacity,
-                               code2, a2, m2, &n2);
+         st2 = wa_adhesion_map(c->model, c->control, c->n_alpha, c->alphas, c->mu_lo, c->mu_hi,
+                               60, c->capacity, code2, a2, m2, &n2, NULL, 0);
       if (st2 != st || n2 != n || memcmp(code2, I(0), m * sizeof(int)) ||
           memcmp(a2, D(0), m * sizeof(double)) || memcmp(m2, D(1), m * sizeof(double)))
-         violation(c, K_INCONSISTENT, "wa_adhesion_map and its control %d differ: status %d/%d, "
-                   "%d/%d points", WA_MAP_CONTROL_LOAD, st, st2, n, n2);
+         violation(c, K_INCONSISTENT, "wa_adhesion_map (n_mu 60) and wa_adhesion_map_control "
+                   "(control %d) differ: status %d/%d, %d/%d points", c->control, st, st2, n, n2);
    }
    if ((c->family == F_ROOTS || c->family == F_ROOTS_GAP) && st == WA_OK &&
        !(c->null_mask & (c->family == F_ROOTS ? 15u : 31u)) && c->capacity > 0 &&
@@ -2053,7 +2132,7 @@ static void cross_check(const call_t *c, int st, rng_t *r) {
       int n = -1;
       double f2 = NAN, p2 = NAN;
       int st2 = wa_load_path(c->model, c->alpha, c->mu, 0, NULL, NULL, NULL, NULL, NULL, &n,
-                             &f2, &p2);
+                             &f2, &p2, NULL, 0);
       lib_call();
       if (st2 != WA_CAPACITY_TOO_SMALL || bits_of(f2) != bits_of(fc) ||
           bits_of(p2) != bits_of(pf))
@@ -2077,7 +2156,7 @@ static void run_one(long index) {
                     ? c.n_mu
                     : 1) * opt_timeout;
    full_msg[0] = 0;
-   fn = 2 * c.family + c.msg;
+   fn = fn_id(&c);
    if (opt_list) {
       printf("%ld %s\n", index, c.repro);
       return;
@@ -2121,11 +2200,14 @@ static void run_one(long index) {
          call_t c2 = c;
          if (unif(&r) < 0.5 && has_msg[c.family] == 1) other = !c.msg;
          c2.msg = other;
+         /* the 0.3 function and the 0.2 name give the same bits where they share the
+            contract (not where the 0.2 name requires an optional output passed as NULL) */
+         if (unif(&r) < 0.5 && compat_equivalent(&c)) c2.compat = !use_compat(&c, c.msg);
          st2 = run_family(&c2, other);
          h2 = digest(st2, used_elements(&c2, st2));
          if (st2 != st || h1 != h2)
-            violation(&c, K_NONDET, "status %d then %d (%s variant), outputs %s", st, st2,
-                      other ? "_msg" : "plain", h1 == h2 ? "equal" : "differ");
+            violation(&c, K_NONDET, "status %d then %d (%s%s), outputs %s", st, st2,
+                      fn_name(fn_id(&c2)), fn_suffix(fn_id(&c2)), h1 == h2 ? "equal" : "differ");
          else if (other && c.msg && memcmp(msg1, mbuf, sizeof mbuf) != 0)
             violation(&c, K_NONDET, "message differs");
          else
@@ -2233,10 +2315,18 @@ static int contract_adhesion_map(void) {
       int code[CAP + 2 * MG], n = -7, st, cap = cases[k].capacity, m = cases[k].null_mask;
       double a[CAP + 2 * MG], mu[CAP + 2 * MG];
       for (i = 0; i < CAP + 2 * MG; i++) code[i] = -12345, a[i] = mu[i] = -12345.0;
-      st = wa_adhesion_map(cases[k].model, cases[k].n_alpha, (m & 16) ? NULL : cases[k].alpha,
-                           cases[k].mu_lo, cases[k].mu_hi, cap, (m & 1) ? NULL : code + MG,
-                           (m & 2) ? NULL : a + MG, (m & 4) ? NULL : mu + MG,
-                           (m & 8) ? NULL : &n);
+      int code2[CAP], n2 = -7, st2;
+      double a2[CAP], mu2[CAP];
+      char msg[256];
+      st = wa_adhesion_map(cases[k].model, WA_MAP_CONTROL_LOAD, cases[k].n_alpha,
+                           (m & 16) ? NULL : cases[k].alpha, cases[k].mu_lo, cases[k].mu_hi, 60,
+                           cap, (m & 1) ? NULL : code + MG, (m & 2) ? NULL : a + MG,
+                           (m & 4) ? NULL : mu + MG, (m & 8) ? NULL : &n, msg, sizeof msg);
+      st2 = wa_adhesion_map_control(cases[k].model, WA_MAP_CONTROL_LOAD, cases[k].n_alpha,
+                                    (m & 16) ? NULL : cases[k].alpha, cases[k].mu_lo,
+                                    cases[k].mu_hi, cap > CAP ? CAP : cap, (m & 1) ? NULL : code2,
+                                    (m & 2) ? NULL : a2, (m & 4) ? NULL : mu2,
+                                    (m & 8) ? NULL : &n2);
       int written = (st == WA_OK || st == WA_CAPACITY_TOO_SMALL) ? (n < cap ? n : cap) : 0;
 #define VIOL(...) (printf("fuzz: wa_adhesion_map case %d: ", k), printf(__VA_ARGS__), \
                    printf("\n"), bad++)
@@ -2244,6 +2334,12 @@ static int contract_adhesion_map(void) {
           st != WA_NOT_CONVERGED && st != WA_NUMERICAL_ERROR)
          VIOL("undocumented status %d", st);
       if (cases[k].invalid && st != WA_INVALID_ARGUMENT) VIOL("invalid accepted: %d", st);
+      if ((st == WA_OK) != (msg[0] == 0)) VIOL("status %d with message '%s'", st, msg);
+      if (st2 != st || (!(m & 8) && n2 != n) ||
+          (written > 0 && (memcmp(code2, code + MG, written * sizeof(int)) ||
+                           memcmp(a2, a + MG, written * sizeof(double)) ||
+                           memcmp(mu2, mu + MG, written * sizeof(double)))))
+         VIOL("wa_adhesion_map_control differs: status %d/%d, n_out %d/%d", st, st2, n, n2);
       if (!cases[k].invalid && st == WA_INVALID_ARGUMENT) VIOL("valid call refused");
       if (!(m & 8)) {
          if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL && n != 0) VIOL("n_out %d on failure", n);
@@ -2267,7 +2363,7 @@ static int contract_adhesion_map(void) {
       }
 #undef VIOL
    }
-   printf("fuzz: wa_adhesion_map contract: %d fixed calls, %d violations\n",
+   printf("fuzz: wa_adhesion_map contract (and wa_adhesion_map_control): %d fixed calls, %d violations\n",
           (int)(sizeof cases / sizeof cases[0]), bad);
    return bad;
 }
@@ -2405,7 +2501,7 @@ int main(int argc, char **argv) {
    for (fn = 0; fn < N_FN; fn++) {
       long n = shm->calls[fn];
       if (n == 0) continue;
-      printf("  %-24s%-4s %9ld %10.3f %10.1f   ", family_name[fn / 2], fn_suffix(fn),
+      printf("  %-24s%-4s %9ld %10.3f %10.1f   ", fn_name(fn), fn_suffix(fn),
              n, 1e3 * shm->seconds[fn] / n, 1e3 * shm->max_seconds[fn]);
       for (k = 0; k < 7; k++) printf(" %ld", shm->status_count[fn][k]);
       printf("\n");
@@ -2426,7 +2522,7 @@ int main(int argc, char **argv) {
              kind_severe[k] ? "SEVERE" : "mild", kind_help[k]);
       for (fn = 0; fn < N_FN; fn++)
          if (shm->viol_fn[k][fn])
-            printf("  %8s   %ld in %s%s\n", "", shm->viol_fn[k][fn], family_name[fn / 2],
+            printf("  %8s   %ld in %s%s\n", "", shm->viol_fn[k][fn], fn_name(fn),
                    fn_suffix(fn));
       if (kind_severe[k]) severe += 1;
    }

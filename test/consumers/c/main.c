@@ -8,9 +8,10 @@
 int main(void) {
    const double c_ref = 0.32795133117893904447, p_ref = 0.17439576801132992591;
    double c, p;
-   int zone, st = wa_equilibrium(WA_MODEL_DW, 0.3, 1.0, 0.2, &c, &p, &zone);
+   char msg[256];
+   int zone, st = wa_equilibrium(WA_MODEL_DW, 0.3, 1.0, 0.2, &c, &p, &zone, NULL, msg, sizeof msg);
    if (st != WA_OK) {
-      fprintf(stderr, "wa_equilibrium: %s\n", wa_status_message(st));
+      fprintf(stderr, "wa_equilibrium: %s: %s\n", wa_status_message(st), msg);
       return 1;
    }
    printf("wavyadhesion %s: c* = %.16f  P* = %.16f\n", wa_version(), c, p);
