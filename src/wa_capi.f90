@@ -1,4 +1,6 @@
-!> The C interface (SPEC section 5), part 1: the closed-form loads, states (equilibrium,
+!> display: none
+!>
+!> The C interface (doc/c-api.md), part 1: the closed-form loads, states (equilibrium,
 !> roots), the branch, load control (critical forces, load path, sweep), profiles, the
 !> status texts and the version. Gap control is in wa_capi_gap, the adhesion map in
 !> wa_capi_map, the 0.2 names in wa_capi_compat; the declarations in include/wavyadhesion.h.

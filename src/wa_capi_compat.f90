@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The C interface, 0.2 compatibility (removed in 0.4): the names 0.2 had besides the
 !> 0.3 functions, each one line calling the core of its 0.3 function with the 0.2
 !> arguments (the `_msg` twins: no mean gap; the `_gap` variants: the mean gap required,

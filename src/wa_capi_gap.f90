@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The C interface, gap (mean-gap) control: the gap-controlled path, the gap law and the
 !> critical values under gap control (declarations in include/wavyadhesion.h; the
 !> conventions in wa_capi). Each export is one call of its `*_core` routine.

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The C interface, the adhesion map: wa_adhesion_map calls the library's adhesion_map
 !> (module wa_map) once and lists its boundary points for the caller (declarations in
 !> include/wavyadhesion.h; the conventions in wa_capi).

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Marshalling for the C interface (modules wa_capi, wa_capi_gap, wa_capi_map,
 !> wa_capi_compat): the message copy, failure values written through C pointers, arrays
 !> copied to the caller, and the checks of counts, capacities and NULL pointers that every
