@@ -101,12 +101,25 @@ contains
    !> options: the numerical choices (md_options; default: the library's); n_residuals:
    !> the number of residual evaluations (each one Psi_c) it took.
    pure subroutine md_equilibrium(params, a_star, state, status, errmsg, options, n_residuals)
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> Contact half-width over the period, a* = a/L, in (0, 1/2] (0 is no contact:
+      !> wa_no_solution; below 1e-100: wa_numerical_error)
       real(wp), intent(in) :: a_star
+      !> The principal state (zone case 1, 2, or 3 at a* = 1/2), its mean gap gbar* = mean
+      !> gap/Delta filled in; on failure the default state_type (zeros, gbar = -1)
       type(state_type), intent(out) :: state
+      !> wa_ok; wa_invalid_argument for bad input; wa_no_solution at a* = 0 or where neither
+      !> case holds; wa_not_converged or wa_numerical_error where the root cannot be resolved
+      !> in double precision
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> The numerical choices (md_options, checked as by md_prepare_options); default: the
+      !> library's
       type(md_options), intent(in), optional :: options
+      !> Receives the number of residual evaluations (each one Psi_c) the solve took (0 if
+      !> the options are refused)
       integer, intent(out), optional :: n_residuals
       type(state_type) :: states(1)
       type(md_options) :: opts
@@ -128,8 +141,13 @@ contains
    !> Check the options (a known psi_method, 1 <= psi_nodes <= 256, tolerances in (0, 1))
    !> and build the md_psi_gauss rules if they are missing.
    pure subroutine md_prepare_options(options, status, errmsg)
+      !> The numerical choices to check; receives the md_psi_gauss rules (gauss_rule) when
+      !> psi_method is md_psi_gauss and they are missing or of another size; unchanged on
+      !> failure
       type(md_options), intent(inout) :: options
+      !> wa_ok, or wa_invalid_argument when a field is out of range
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad field and its valid range)
       character(len=*), intent(inout), optional :: errmsg
       status = wa_ok
       if (options%psi_method < md_psi_rules .or. options%psi_method > md_psi_qags) then
@@ -160,11 +178,19 @@ contains
    !> size(states), the first size(states) are stored and status = wa_capacity_too_small.
    !> Status and special a* as for md_equilibrium.
    pure subroutine md_roots(params, a_star, states, n_roots, status, errmsg)
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> Contact half-width over the period, a* = a/L, in (0, 1/2] (as for md_equilibrium)
       real(wp), intent(in) :: a_star
+      !> Receives the states, their gbar* filled in: case-1 roots by increasing c*, then case
+      !> 2; unchanged on failure (except wa_capacity_too_small: the first size(states))
       type(state_type), intent(inout) :: states(:)
+      !> Number of equilibria found (may exceed size(states)); 0 on any other failure
       integer, intent(out) :: n_roots
+      !> wa_ok; wa_capacity_too_small when n_roots > size(states); otherwise as for
+      !> md_equilibrium
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(state_type) :: found(max_roots + 1)
       type(md_options) :: opts

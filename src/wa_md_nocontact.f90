@@ -33,7 +33,9 @@ contains
    !>   2 Dcod - 2 C^2 + (Sigma0/pi) [Cl2(4 pi c*) - 2 Cl2(2 pi c*)]   (h(c*) = 2 Dcod).
    !> NaN outside [0, 1/2].
    elemental function md_no_contact_crest_gap(params, c_star) result(h)
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> Cohesive-zone half-width over the period, c* = c/L, in [0, 1/2] (NaN result outside)
       real(wp), intent(in) :: c_star
       real(wp) :: h
       if (.not. (c_star >= 0.0_wp .and. c_star <= 0.5_wp)) then
@@ -49,11 +51,21 @@ contains
    !> gbar = 1 + crest_gap). wa_no_solution where the crest gap would be negative
    !> (the surfaces would touch: a contact state) or mu = 0 (no cohesive zone).
    pure subroutine md_no_contact_state(params, c_star, state, status, errmsg, crest_gap)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0
       type(params_type), intent(in) :: params
+      !> Cohesive-zone half-width over the period, c* = c/L, in [0, 1/2]
       real(wp), intent(in) :: c_star
+      !> The state: zone case 0 (zone_no_contact), a* = 0, c*, P* = -2 Sigma0 c*, gbar* =
+      !> mean gap/Delta; on failure the default state_type (zeros, gbar = -1)
       type(state_type), intent(out) :: state
+      !> wa_ok; wa_invalid_argument for bad params, c_star out of range, or crest_gap
+      !> missing or out of range at c* = 1/2; wa_no_solution at mu = 0, where the crest gap
+      !> would be negative, or at c* = 1/2 when Dcod < 1
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> Crest gap h(0)/Delta, in [0, 2 Dcod - 2]: needed at c* = 1/2 only (ignored
+      !> elsewhere)
       real(wp), intent(in), optional :: crest_gap
       real(wp) :: h00
 
@@ -108,11 +120,21 @@ contains
    !> returned in c_close(1:n_close), increasing. stretch is true when Dcod >= 1: then the
    !> states with c* = 1/2 (crest gap in [0, 2 Dcod - 2], P* = -Sigma0) exist too.
    pure subroutine md_no_contact_closures(params, c_close, n_close, stretch, status, errmsg)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0
       type(params_type), intent(in) :: params
+      !> Receives the c* in (0, 1/2) where the crest gap closes, increasing, in
+      !> c_close(1:n_close); the rest is 1/2 (on failure c_close(1:n_close) may hold an
+      !> unconverged value)
       real(wp), intent(out) :: c_close(2)
+      !> Number of closures, 0, 1 or 2; 0 for bad params or mu = 0 (on wa_not_converged:
+      !> the closures attempted)
       integer, intent(out) :: n_close
+      !> True when Dcod >= 1 (the states with c* = 1/2 exist); false for bad params or mu = 0
       logical, intent(out) :: stretch
+      !> wa_ok; wa_invalid_argument for bad params; wa_no_solution at mu = 0;
+      !> wa_not_converged where the minimum or a zero of the crest gap does not converge
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       real(wp) :: c_min, h_min, h_top
 
@@ -151,11 +173,21 @@ contains
    !> The last state of a piece has crest gap 0 (it joins the a* -> 0 end of the contact
    !> curve at that c*). c* is sampled densely near c* = 0 (gbar ~ c* ln c* there).
    pure subroutine md_no_contact_family(params, piece, states, n_states, status, errmsg)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0
       type(params_type), intent(in) :: params
+      !> Which piece of the family: 1 from the first interaction, 2 from the second closure
+      !> to c* = 1/2
       integer, intent(in) :: piece
+      !> Receives the states in order along the piece (size(states) >= 3 of them); on
+      !> failure the states up to the failing one may have been overwritten
       type(state_type), intent(inout) :: states(:)
+      !> Number of states stored: size(states), or 0 when piece 2 does not exist or on failure
       integer, intent(out) :: n_states
+      !> wa_ok (also when piece 2 does not exist); wa_invalid_argument for a bad piece,
+      !> size(states) < 3 or bad params; wa_no_solution at mu = 0; wa_not_converged or
+      !> wa_numerical_error where a closure or a state next to it cannot be resolved
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       real(wp) :: c_close(2), c_lo, c_hi, t, h_top
       integer :: n_close, n, n_c, n_s, i

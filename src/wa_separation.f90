@@ -68,6 +68,7 @@ contains
    !> Westergaard mean gap gbar* = 1 - A^2 + A^2 ln A^2 = g_W(P*), P* = sin^2(pi a*);
    !> NaN outside [0, 1/2].
    elemental function westergaard_mean_gap(a_star) result(g)
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
       real(wp), intent(in) :: a_star
       real(wp) :: g
       if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp)) then
@@ -81,7 +82,11 @@ contains
    !> Westergaard plus the flat-punch (square-root singular) term. 0 at a* = 1/2, 1 at a* = 0;
    !> NaN outside [0, 1/2] or for alpha < 0.
    elemental function jkr_mean_gap(alpha, a_star) result(g)
-      real(wp), intent(in) :: alpha, a_star
+      !> Johnson's parameter alpha (dimensionless, (2.21)), >= 0 and finite (NaN result
+      !> otherwise)
+      real(wp), intent(in) :: alpha
+      !> Contact half-width over the period, a* = a/L, in [0, 1/2] (NaN result outside)
+      real(wp), intent(in) :: a_star
       real(wp) :: g
       real(wp) :: a, q
       if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp .and. alpha >= 0.0_wp .and. &
@@ -105,7 +110,10 @@ contains
    !> written as g_W(A^2) + lambda [-d2 ln C^2 + A^2 (y - ln(1+y))], y = d2/A^2,
    !> d2 = C^2 - A^2: every term >= 0, no cancellation however large lambda.
    elemental function dw_state_gbar(params, state) result(g)
+      !> The parameters the state was solved with
       type(params_type), intent(in) :: params
+      !> A DW state of zone case 1, 2 or 3 solved for the same params (not validated:
+      !> check_state; state_mean_gap validates)
       type(state_type), intent(in) :: state
       real(wp) :: g
       type(separation_context) :: ctx
@@ -117,7 +125,20 @@ contains
    !> q = cos(pi a*), C = sin(pi c*), qc = cos(pi c*), d2 = C^2 - A^2; case 2: C = 1,
    !> qc = 0, d2 = q^2), as in dw_state_gbar; 0 at full contact (q = 0).
    elemental function dw_mean_gap(sigma0, a, q, c, qc, d2) result(g)
-      real(wp), intent(in) :: sigma0, a, q, c, qc, d2
+      !> Peak adhesive stress over p*, Sigma0 = pi mu (alpha^2/32)^(1/3) >= 0 (params%sigma0;
+      !> 0 gives the Westergaard mean gap)
+      real(wp), intent(in) :: sigma0
+      !> A = sin(pi a*), in [0, 1]
+      real(wp), intent(in) :: a
+      !> q = cos(pi a*), in [0, 1] (q <= 0: full contact, result 0)
+      real(wp), intent(in) :: q
+      !> C = sin(pi c*), in [A, 1] (1 in case 2)
+      real(wp), intent(in) :: c
+      !> qc = cos(pi c*), in [0, 1] (0 in case 2)
+      real(wp), intent(in) :: qc
+      !> d2 = C^2 - A^2 >= 0, formed without cancellation (q^2 in case 2; 0 gives the
+      !> Westergaard mean gap)
+      real(wp), intent(in) :: d2
       real(wp) :: g, lambda
       g = 0.0_wp
       if (q <= 0.0_wp) return
@@ -134,7 +155,10 @@ contains
    !> MD mean gap of a solved state (zone cases 0-3); the quadrature of
    !> int acosh(sin(pi t)/A) dt is a graded 16-point Gauss-Legendre sum.
    elemental function md_state_gbar(params, state) result(g)
+      !> The parameters the state was solved with
       type(params_type), intent(in) :: params
+      !> An MD state of zone case 0-3 solved for the same params (not validated:
+      !> check_state; state_mean_gap validates)
       type(state_type), intent(in) :: state
       real(wp) :: g
       type(separation_context) :: ctx
@@ -144,11 +168,19 @@ contains
 
    !> Mean gap gbar* of a solved state of `model`, with validation (check_state).
    pure subroutine state_mean_gap(model, params, state, gbar, status, errmsg)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> A state solved for this model and params (by model_equilibrium, model_roots, ...)
       type(state_type), intent(in) :: state
+      !> Receives the mean gap over one period over Delta, gbar* (0 at full contact); 0 on
+      !> failure
       real(wp), intent(out) :: gbar
+      !> wa_ok; wa_invalid_argument when model, params or state fail check_state;
+      !> wa_no_solution when gbar* is not finite
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(separation_context) :: ctx
 
@@ -170,12 +202,24 @@ contains
    !> JKR: the traction is -Infinity exactly at the contact edges |x*| = a* (the square-root
    !> singularity); everything else is finite.
    pure subroutine state_profile(model, params, state, x_star, traction, gap, status, errmsg)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md)
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> A state solved for this model and params (by model_equilibrium, model_roots, ...)
       type(state_type), intent(in) :: state
+      !> The points x* = x/L (any finite values: period 1, crest at 0)
       real(wp), intent(in) :: x_star(:)
-      real(wp), intent(out) :: traction(:), gap(:)
+      !> Receives the traction p/p* at each x_star (size(x_star); negative = tensile); all 0
+      !> on failure
+      real(wp), intent(out) :: traction(:)
+      !> Receives the gap h/Delta at each x_star (size(x_star); 0 inside the contact); all 0
+      !> on failure
+      real(wp), intent(out) :: gap(:)
+      !> wa_ok; wa_invalid_argument for sizes that differ from size(x_star), a non-finite
+      !> x_star, or model, params or state that fail check_state
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(separation_context) :: ctx
       integer :: i
@@ -206,9 +250,15 @@ contains
    !> Traction p/p* at x* of a solved state (no validation: NaN where the state or x* is
    !> not valid; state_profile validates).
    elemental function state_traction(model, params, state, x_star) result(p)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md); NaN result
+      !> for any other
       integer, intent(in) :: model
+      !> The parameters the state was solved with (NaN result if they fail check_params)
       type(params_type), intent(in) :: params
+      !> A state solved for this model and params (NaN result if it fails check_state)
       type(state_type), intent(in) :: state
+      !> Position over the period, x* = x/L (any finite real: period 1, crest at 0; NaN
+      !> result otherwise)
       real(wp), intent(in) :: x_star
       real(wp) :: p
       integer :: status
@@ -222,9 +272,15 @@ contains
 
    !> Gap h/Delta at x* of a solved state (NaN where the state or x* is not valid).
    elemental function state_gap(model, params, state, x_star) result(h)
+      !> Model constant (model_westergaard, model_jkr, model_dw, model_md); NaN result
+      !> for any other
       integer, intent(in) :: model
+      !> The parameters the state was solved with (NaN result if they fail check_params)
       type(params_type), intent(in) :: params
+      !> A state solved for this model and params (NaN result if it fails check_state)
       type(state_type), intent(in) :: state
+      !> Position over the period, x* = x/L (any finite real: period 1, crest at 0; NaN
+      !> result otherwise)
       real(wp), intent(in) :: x_star
       real(wp) :: h
       integer :: status
@@ -239,10 +295,16 @@ contains
    !> wa_ok if `state` can be a solved state of `model` (ranges and zone case; the
    !> equilibrium equation itself is not re-checked), else wa_invalid_argument.
    pure subroutine check_state(model, params, state, status, errmsg)
+      !> Model constant to check (model_westergaard, model_jkr, model_dw, model_md)
       integer, intent(in) :: model
+      !> Parameters to check as new_params does (check_params)
       type(params_type), intent(in) :: params
+      !> The state to check: a* in [0, 1/2], c* in [a*, 1/2], c* - a* in [0, 1/2 - a*], a
+      !> zone case that fits the model and a*, a finite P*
       type(state_type), intent(in) :: state
+      !> wa_ok, or wa_invalid_argument for the first check that fails
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument or field and its valid range)
       character(len=*), intent(inout), optional :: errmsg
 
       select case (model)
