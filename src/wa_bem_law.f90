@@ -7,7 +7,7 @@ module wa_bem_law
    implicit none
    private
 
-   public :: bem_law_type, lj_law, law_eval, law_potential, law_zero, law_peak
+   public :: bem_law_type, lj_law, law_eval, law_curvature, law_potential, law_zero, law_peak
    public :: law_lj39
 
    !> The Lennard-Jones 3-9 law sigma(h) = (8 dgamma/(3 eps)) ((eps/h)^3 - (eps/h)^9)
@@ -49,6 +49,19 @@ contains
          slope = c*(9.0_wp*s9 - 3.0_wp*s3)/h
       end select
    end subroutine law_eval
+
+   !> Second derivative d^2 sigma/dh^2, for h > 0 (the sign of an eigenvalue's crossing
+   !> at a fold).
+   elemental function law_curvature(law, h) result(c2)
+      type(bem_law_type), intent(in) :: law
+      real(wp), intent(in) :: h
+      real(wp) :: c2, s3
+      select case (law%kind)
+      case default   ! law_lj39
+         s3 = (law%eps/h)**3
+         c2 = 8.0_wp*law%dgamma/(3.0_wp*law%eps)*(12.0_wp*s3 - 90.0_wp*s3**3)/h**2
+      end select
+   end function law_curvature
 
    !> Interaction energy per area phi(h) = -integral_h^inf sigma, so d phi/dh = sigma and
    !> phi(zero of the law) = -dgamma.

@@ -19,7 +19,7 @@ module wa_bem_path
    use wa_bem_law, only: bem_law_type, lj_law, law_eval
    use wa_bem_elastic, only: full_period
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
-      point_info, lj_problem, metric_dot
+      point_info, lj_problem, metric_dot, jacobian_free
    use wa_bem_trace, only: lj_branch_type, lj_trace, lj_trace_options, lj_point_at, &
       branch_append, lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
@@ -281,11 +281,23 @@ contains
       real(wp), intent(in) :: value
       integer, intent(out) :: land, status
       type(jacobian_type) :: pre
+      call crossing_with(problem, pre, branch, by, i, value, land, status)
+      call jacobian_free(pre)
+   end subroutine insert_crossing
+
+   !> insert_crossing with the caller's workspace pre.
+   subroutine crossing_with(problem, pre, branch, by, i, value, land, status)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: pre
+      type(lj_branch_type), intent(inout) :: branch
+      integer, intent(in) :: by, i
+      real(wp), intent(in) :: value
+      integer, intent(out) :: land, status
       type(brent_type) :: solver
       type(point_info_type) :: info
       real(wp), allocatable :: z(:), t(:)
       real(wp) :: q0, q1, s, ds, q
-      integer :: it, n_factor
+      integer :: it, n_factor, k
       logical :: done
       q0 = q_of(branch, by, i) - value
       q1 = q_of(branch, by, i + 1) - value
@@ -316,12 +328,18 @@ contains
       info = point_info(problem, z)
       call factor_at(problem, z, pre)
       n_factor = n_factor + 1
+      if (problem%two_grid) then         ! the inertia of the interval (no fold inside)
+         k = i
+         if (branch%extremum(i) /= 0) k = i + 1
+         pre%neg_load = branch%neg_load(k)
+         pre%neg_gap = branch%neg_gap(k)
+      end if
       call branch_append(problem, branch, z, t, info, branch%s(i) + solver%b, pre%neg_load, &
          pre%neg_gap, 0, 0)
       call move_last(branch, i + 1)
       land = i + 1
       branch%n_factor = branch%n_factor + n_factor
-   end subroutine insert_crossing
+   end subroutine crossing_with
 
    !> Move the last point of the branch to position k (the others shift up).
    subroutine move_last(branch, k)

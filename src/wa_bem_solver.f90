@@ -8,33 +8,49 @@
 !> A further linear equation a . z = target closes the system: a fixed mean gap, a fixed
 !> load, or the pseudo-arclength hyperplane. The bordered system is solved by block
 !> elimination on the Bunch-Kaufman factorisation of S, with one step of refinement
-!> (stable at folds, where S is singular).
+!> (stable at folds, where S is singular). Products with the stiffness go by FFT; above
+!> dense_max_unknowns the preconditioner is the two-grid one of wa_bem_fast (no dense
+!> factorisation of the fine grid) and the trace counts the inertia across its folds.
 module wa_bem_solver
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_not_converged, wa_invalid_argument, wa_capacity_too_small, &
       set_error
    use wa_params, only: params_type, check_params
    use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_zero, law_peak
-   use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix, measure_below, peak_value
+   use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix, measure_below, &
+      peak_value, kernel_value, full_period
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
+   use wa_bem_fast, only: fft_plans_type, plans_create, plans_destroy, circulant_symbol, &
+      circulant_apply, twogrid_type, coarse_stiffness, twogrid_setup, twogrid_apply
+   use, intrinsic :: iso_c_binding, only: c_associated
    implicit none
    private
 
    public :: lj_problem_type, jacobian_type, point_info_type
    public :: lj_problem, lj_auto_n, lj_zone_length, lj_max_unknowns, lj_max_auto_n
-   public :: setup_operator, residual, factor_at, bordered_solve, newton, tangent_at, &
+   public :: setup_operator, use_two_grid, jacobian_free, residual, factor_at, bordered_solve, newton, tangent_at, &
       point_info, metric_dot, gap_constraint, load_constraint
 
    !> The discretised problem: law, grid and the elastic stiffness W K.
    type :: lj_problem_type
       type(bem_law_type) :: law
       type(bem_grid_type) :: grid
+      !> W K as a dense matrix (dense preconditioner only)
       real(wp), allocatable :: kw(:, :)
+      !> The circulant's symbol over N in halfcomplex order (FFT products) and, for the two-grid
+      !> preconditioner, the coarse circulant's column and the grid ratio
+      real(wp), allocatable :: symbol(:), kc(:)
+      logical :: two_grid = .false.
+      integer :: ratio = 1
    end type lj_problem_type
 
    !> The Hessian S factorised at one point, with q = S^-1 w for the bordered solves.
    type :: jacobian_type
       type(ldl_type) :: fact
+      !> the two-grid preconditioner (problem%two_grid) and the FFT plans (made at the
+      !> first factor_at, freed by jacobian_free)
+      type(twogrid_type) :: tg
+      type(fft_plans_type) :: plans
       real(wp), allocatable :: dw(:), q(:)
       !> negative eigenvalues of the Hessians under load control (S) and gap control
       !> (S on mean-gap-preserving variations)
@@ -53,9 +69,17 @@ module wa_bem_solver
    !> GMRES iterations above which the preconditioner is refactorised
    integer, parameter :: krylov_refresh = 12
 
-   !> Memory cap of the dense solver: unknowns per state (N/2 + 1 on an even profile, N
-   !> otherwise). A cycle holds up to three n x n matrices: 2049 unknowns take about 100 MB.
-   integer, parameter :: lj_max_unknowns = 2049
+   !> Cap of the unknowns per state (N/2 + 1 on an even profile, N otherwise): beyond
+   !> dense_max_unknowns a state costs O(N) memory, and a branch of a few hundred states
+   !> at the cap about 100 MB.
+   integer, parameter :: lj_max_unknowns = 8193
+   !> Unknowns above which the preconditioner is the two-grid one (measured, at alpha 0.3,
+   !> mu 3: the two-grid trace takes 0.5 s at N = 512 against 0.7 s with the dense one)
+   integer, parameter :: dense_max_unknowns = 129
+   !> Coarse period of the two-grid preconditioner: N/8, at least 128 (a coarser grid
+   !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long)
+   integer, parameter :: coarse_min = 128, max_ratio = 8
+
    !> Time cap of the automatic grid: one cycle at N = 2048 takes about two minutes on
    !> one core (doc/accuracy-performance.md); a finer automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
@@ -114,31 +138,74 @@ contains
             write (text, '(es10.3)') lj_zone_length(params)
             call set_error(wa_capacity_too_small, "lj: the interaction zone ("// &
                trim(adjustl(text))//" of a period) needs more than the automatic grid's "// &
-               "cap of 2048 points per period; pass n explicitly (at most 4096)", status, errmsg)
+               "cap of 2048 points per period; pass n explicitly (at most 16384)", status, errmsg)
             return
          end if
       end if
       call new_grid(np, problem%grid, status, errmsg, profile)
       if (status /= wa_ok) return
       if (problem%grid%n > lj_max_unknowns) then
-         call set_error(wa_capacity_too_small, "lj: n gives more than 2049 unknowns (n <= "// &
-            "4096 on an even profile, n <= 2048 otherwise)", status, errmsg)
+         call set_error(wa_capacity_too_small, "lj: n gives more than 8193 unknowns (n <= "// &
+            "16384 on an even profile, n <= 8192 otherwise)", status, errmsg)
          return
       end if
       problem%law = lj_law(params%alpha, params%mu)
       call setup_operator(problem)
    end subroutine lj_problem
 
-   !> Fill problem%kw for problem%grid.
+   !> The operators of problem%grid: the stiffness's symbol, and the dense W K (small
+   !> grids) or the two-grid preconditioner's coarse operator.
    subroutine setup_operator(problem)
       type(lj_problem_type), intent(inout) :: problem
-      allocate (problem%kw(problem%grid%n, problem%grid%n))
-      call stiffness_matrix(problem%grid, problem%kw)
+      integer :: np, nc
+      np = problem%grid%n_period
+      allocate (problem%symbol(0:np - 1))
+      call circulant_symbol(kernel_value(np, [(nc, nc = 0, np - 1)]), problem%symbol)
+      nc = max(coarse_min, np/max_ratio)
+      if (problem%grid%n > dense_max_unknowns .and. mod(np, nc) == 0) then
+         call use_two_grid(problem, nc)
+      else
+         allocate (problem%kw(problem%grid%n, problem%grid%n))
+         call stiffness_matrix(problem%grid, problem%kw)
+      end if
    end subroutine setup_operator
 
-   !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
-   pure subroutine residual(problem, z, r, dw)
+   !> Switch problem to the two-grid preconditioner with coarse period nc (a divisor of
+   !> N, at least 8, N/nc >= 2).
+   subroutine use_two_grid(problem, nc)
+      type(lj_problem_type), intent(inout) :: problem
+      integer, intent(in) :: nc
+      integer :: np, i
+      np = problem%grid%n_period
+      problem%two_grid = .true.
+      problem%ratio = np/nc
+      if (allocated(problem%kc)) deallocate (problem%kc)
+      allocate (problem%kc(0:nc - 1))
+      call coarse_stiffness(kernel_value(np, [(i, i = 0, np - 1)]), problem%symbol, &
+         problem%ratio, problem%kc)
+   end subroutine use_two_grid
+
+   !> Free the FFT plans of jac (its owner calls this when done with it).
+   subroutine jacobian_free(jac)
+      type(jacobian_type), intent(inout) :: jac
+      call plans_destroy(jac%plans)
+   end subroutine jacobian_free
+
+   !> y = W K x on the unknowns, by FFT over the whole period.
+   subroutine stiffness_apply(problem, jac, x, y)
       type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: x(:)
+      real(wp), intent(out) :: y(:)
+      real(wp) :: g(0:problem%grid%n_period - 1)
+      call circulant_apply(jac%plans, problem%symbol, full_period(problem%grid, x), g)
+      y = problem%grid%w*g(0:problem%grid%n - 1)
+   end subroutine stiffness_apply
+
+   !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
+   subroutine residual(problem, jac, z, r, dw)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: z(:)
       real(wp), intent(out) :: r(:)
       real(wp), intent(out), optional :: dw(:)
@@ -147,12 +214,33 @@ contains
       n = problem%grid%n
       allocate (sig(n), slope(n))
       call law_eval(problem%law, z(1:n), sig, slope)
-      r = matmul(problem%kw, z(1:n) - problem%grid%f) + problem%grid%w*(sig + z(n + 1))
+      call stiffness_apply(problem, jac, z(1:n) - problem%grid%f, r)
+      r = r + problem%grid%w*(sig + z(n + 1))
       if (present(dw)) dw = problem%grid%w*slope
    end subroutine residual
 
-   !> Factorise S at z, with q = S^-1 w and the inertia under both controls.
-   pure subroutine factor_at(problem, z, jac)
+   !> x ~ S^-1 b with the preconditioner in jac (exact on the dense path).
+   subroutine solve_s(problem, jac, b, x)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: b(:)
+      real(wp), intent(out) :: x(:)
+      real(wp) :: g(0:problem%grid%n_period - 1)
+      if (problem%two_grid) then
+         ! S = W A: A^-1 (b/w), on the whole period (an even field unfolded)
+         call twogrid_apply(jac%tg, jac%plans, problem%symbol, &
+            full_period(problem%grid, b/problem%grid%w), g)
+         x = g(0:problem%grid%n - 1)
+      else
+         x = b
+         call ldl_solve(jac%fact, x)
+      end if
+   end subroutine solve_s
+
+   !> Factorise S at z, with q = S^-1 w and the inertia under both controls (two-grid:
+   !> the preconditioner at z, the inertia that of the coarse system, an estimate the
+   !> trace uses only far apart).
+   subroutine factor_at(problem, z, jac)
       type(lj_problem_type), intent(in) :: problem
       real(wp), intent(in) :: z(:)
       type(jacobian_type), intent(inout) :: jac
@@ -161,7 +249,19 @@ contains
       n = problem%grid%n
       allocate (sig(n))
       if (.not. allocated(jac%dw)) allocate (jac%dw(n), jac%q(n))
+      if (jac%plans%np /= problem%grid%n_period) call plans_create(jac%plans, problem%grid%n_period)
       call law_eval(problem%law, z(1:n), sig, jac%dw)
+      if (problem%two_grid) then
+         call twogrid_setup(full_period(problem%grid, jac%dw), problem%kc, problem%ratio, &
+            problem%grid%even, jac%tg)
+         jac%dw = problem%grid%w*jac%dw
+         call solve_s(problem, jac, problem%grid%w, jac%q)
+         jac%neg_load = jac%tg%coarse%negative + jac%tg%coarse%zero
+         jac%neg_gap = jac%neg_load - 1
+         if (dot_product(problem%grid%w, jac%q) > 0.0_wp) jac%neg_gap = jac%neg_gap + 1
+         jac%neg_gap = max(jac%neg_gap, 0)
+         return
+      end if
       jac%dw = problem%grid%w*jac%dw
       if (.not. allocated(jac%fact%a)) allocate (jac%fact%a(n, n))
       jac%fact%a = problem%kw
@@ -180,7 +280,7 @@ contains
    end subroutine factor_at
 
    !> S_frozen x + w y = r1, a(1:n) . x + a(n+1) y = r2 (S as factorised in jac).
-   pure subroutine bordered_solve(problem, jac, a, r1, r2, x, y)
+   subroutine bordered_solve(problem, jac, a, r1, r2, x, y)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: a(:), r1(:), r2
@@ -188,21 +288,26 @@ contains
       real(wp), allocatable :: e1(:), dx(:)
       real(wp) :: e2, dy
       integer :: n, pass
+      logical :: ok
       n = problem%grid%n
+      if (problem%two_grid) then            ! the preconditioner is not S^-1: iterate
+         call krylov_solve(problem, jac, jac%dw, a, r1, r2, x, y, ok)
+         if (ok) return
+      end if
       allocate (e1(n), dx(n))
       e1 = r1
       e2 = r2
       x = 0.0_wp
       y = 0.0_wp
       do pass = 1, 2           ! block elimination, then one refinement with its residual
-         dx = e1
-         call ldl_solve(jac%fact, dx)
+         call solve_s(problem, jac, e1, dx)
          dy = (e2 - dot_product(a(1:n), dx))/(a(n + 1) - dot_product(a(1:n), jac%q))
          dx = dx - jac%q*dy
          x = x + dx
          y = y + dy
          if (pass == 2) exit
-         e1 = r1 - matmul(problem%kw, x) - jac%dw*x - problem%grid%w*y
+         call stiffness_apply(problem, jac, x, e1)
+         e1 = r1 - e1 - jac%dw*x - problem%grid%w*y
          e2 = r2 - dot_product(a(1:n), x) - a(n + 1)*y
       end do
    end subroutine bordered_solve
@@ -262,7 +367,7 @@ contains
       status = wa_not_converged
       do it = 1, max_iter
          if (present(iterations)) iterations = it
-         call residual(problem, z, r, dw)
+         call residual(problem, jac, z, r, dw)
          ! inexact Newton: the linear residual need only shrink with the correction
          eta = max(1.0e-11_wp, min(1.0e-3_wp, e_prev**1.5_wp))
          call krylov_solve(problem, jac, dw, a, -r, target - dot_product(a, z), dx, dy, ok, &
@@ -306,7 +411,7 @@ contains
    !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
    !> preconditioned by the block elimination on the factorisation in jac. ok false when
    !> the relative residual (tolerance, default 1e-11) is not reached in m iterations.
-   pure subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
+   subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: dw(:), a(:), r1(:), r2
@@ -339,7 +444,7 @@ contains
       ok = .false.
       do j = 1, m
          call precondition(problem, jac, a, v(:, j), pu)
-         call apply_jacobian(problem, dw, a, pu, u)
+         call apply_jacobian(problem, jac, dw, a, pu, u)
          do i = 1, j                                   ! modified Gram-Schmidt
             h(i, j) = dot_product(v(:, i), u)
             u = u - h(i, j)*v(:, i)
@@ -377,26 +482,27 @@ contains
    end subroutine krylov_solve
 
    !> The bordered Jacobian at the current point times u.
-   pure subroutine apply_jacobian(problem, dw, a, u, ju)
+   subroutine apply_jacobian(problem, jac, dw, a, u, ju)
       type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: dw(:), a(:), u(:)
       real(wp), intent(out) :: ju(:)
       integer :: n
       n = problem%grid%n
-      ju(1:n) = matmul(problem%kw, u(1:n)) + dw*u(1:n) + problem%grid%w*u(n + 1)
+      call stiffness_apply(problem, jac, u(1:n), ju(1:n))
+      ju(1:n) = ju(1:n) + dw*u(1:n) + problem%grid%w*u(n + 1)
       ju(n + 1) = dot_product(a, u)
    end subroutine apply_jacobian
 
    !> Block elimination of the bordered system on the factorised (nearby) Hessian.
-   pure subroutine precondition(problem, jac, a, u, pu)
+   subroutine precondition(problem, jac, a, u, pu)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: a(:), u(:)
       real(wp), intent(out) :: pu(:)
       integer :: n
       n = problem%grid%n
-      pu(1:n) = u(1:n)
-      call ldl_solve(jac%fact, pu(1:n))
+      call solve_s(problem, jac, u(1:n), pu(1:n))
       pu(n + 1) = (u(n + 1) - dot_product(a(1:n), pu(1:n)))/(a(n + 1) - dot_product(a(1:n), jac%q))
       pu(1:n) = pu(1:n) - jac%q*pu(n + 1)
    end subroutine precondition
@@ -419,7 +525,7 @@ contains
       a(1:n) = problem%grid%w*t_prev(1:n)/problem%grid%n_period
       a(n + 1) = t_prev(n + 1)
       zero = 0.0_wp
-      call residual(problem, z, r, dw)
+      call residual(problem, jac, z, r, dw)
       call krylov_solve(problem, jac, dw, a, zero, 1.0_wp, t(1:n), y, ok)
       if (.not. ok) then
          call factor_at(problem, z, jac)

@@ -8,17 +8,24 @@
 !> tangent turns by more than max_turn (in the arclength metric) or when the load or
 !> the mean gap changes by more than dp_max, dg_max; the new tangent is oriented along
 !> the old one, so the trace cannot turn back on itself at a sharp fold.
+!>
+!> Inertia: from the factorisation at each event point and after it (dense
+!> preconditioner); with the two-grid one it is counted across the folds instead: at a
+!> simple fold the Hessian's eigenvalue through zero has the eigenvector t_h and moves
+!> with d lambda/ds = sum(w sigma''(h) t_h^3)/|t_h|^2, so the count of its control
+!> changes by -sign of that sum (doc/theory.md, "Smooth adhesion").
 module wa_bem_trace
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_not_converged, wa_capacity_too_small, set_error
-   use wa_bem_law, only: law_zero, law_peak
+   use wa_bem_law, only: law_zero, law_peak, law_curvature
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
-      bordered_solve, newton, tangent_at, point_info, metric_dot, gap_constraint
+      bordered_solve, newton, tangent_at, point_info, metric_dot, gap_constraint, jacobian_free
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    implicit none
    private
 
-   public :: lj_branch_type, lj_trace_options, lj_trace, lj_point_at, branch_append
+   public :: lj_branch_type, lj_trace_options, lj_trace, lj_point_at, branch_append, &
+      fold_crossing
    public :: lj_event_none, lj_event_load_fold, lj_event_gap_fold, &
       lj_event_full_contact, lj_event_contact, lj_event_end
 
@@ -79,9 +86,21 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       type(lj_trace_options), intent(in), optional :: options
+      type(jacobian_type) :: pre
+      call trace_with(problem, pre, branch, status, errmsg, options)
+      call jacobian_free(pre)
+   end subroutine lj_trace
+
+   !> lj_trace with the caller's workspace pre.
+   subroutine trace_with(problem, pre, branch, status, errmsg, options)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: pre
+      type(lj_branch_type), intent(out) :: branch
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
+      type(lj_trace_options), intent(in), optional :: options
       type(lj_trace_options) :: opts
       type(trace_point) :: cur, nxt
-      type(jacobian_type) :: pre
       real(wp) :: ds, turn, eps, p_fc
       integer :: n, iters, n_before, factor_before
       logical :: accept, done
@@ -125,8 +144,15 @@ contains
          if (branch%n > n_before .or. branch%n_factor > factor_before) then
             call factor_at(problem, nxt%z, pre)
             branch%n_factor = branch%n_factor + 1
-            nxt%neg_load = pre%neg_load
-            nxt%neg_gap = pre%neg_gap
+            if (problem%two_grid) then          ! counted across the step's folds
+               if (branch%n > n_before) then
+                  nxt%neg_load = branch%neg_load(branch%n)
+                  nxt%neg_gap = branch%neg_gap(branch%n)
+               end if
+            else
+               nxt%neg_load = pre%neg_load
+               nxt%neg_gap = pre%neg_gap
+            end if
          end if
          if (nxt%info%h_max <= eps .and. p_fc == huge(1.0_wp)) p_fc = max(nxt%info%p, 0.0_wp)
          done = nxt%info%h_max <= eps .and. nxt%neg_load == 0 .and. nxt%neg_gap == 0 &
@@ -142,7 +168,7 @@ contains
          if (iters < huge(iters) .and. turn < 0.5_wp*opts%max_turn) ds = 1.5_wp*ds
       end do
       status = wa_ok
-   end subroutine lj_trace
+   end subroutine trace_with
 
    !> Largest step from a point: far apart a quarter of the crest gap (the load varies on
    !> that scale), else 0.1 (the other controls bound it).
@@ -256,7 +282,7 @@ contains
       type(jacobian_type), intent(inout) :: pre
       type(lj_branch_type), intent(inout) :: branch
       type(trace_point) :: found(4)
-      integer :: kinds(4), order(4), nf, kind, i, j, ev, ext, status
+      integer :: kinds(4), order(4), nf, kind, i, j, ev, ext, status, neg_load, neg_gap
       real(wp) :: f0, f1
       nf = 0
       do kind = 1, 4
@@ -279,20 +305,28 @@ contains
             j = j - 1
          end do
       end do
+      neg_load = cur%neg_load
+      neg_gap = cur%neg_gap
       do i = 1, nf
          associate (pt => found(order(i)), kind => kinds(order(i)))
             select case (kind)
             case (1)
                ev = lj_event_load_fold
                ext = merge(1, -1, event_value(problem, 1, cur) > 0.0_wp)
+               neg_load = max(neg_load + fold_crossing(problem, pt%z, pt%t), 0)
             case (2)
                ev = lj_event_gap_fold
                ext = merge(2, -2, event_value(problem, 2, cur) > 0.0_wp)
+               neg_gap = max(neg_gap + fold_crossing(problem, pt%z, pt%t), 0)
             case (3)
                ev = lj_event_full_contact; ext = 0
             case default
                ev = lj_event_contact; ext = 0
             end select
+            if (problem%two_grid) then
+               pt%neg_load = neg_load
+               pt%neg_gap = neg_gap
+            end if
             call branch_append(problem, branch, pt%z, pt%t, pt%info, pt%s, pt%neg_load, &
                pt%neg_gap, ev, ext)
          end associate
@@ -357,6 +391,18 @@ contains
       if (.not. allocated(t)) allocate (t(n + 1))
       call tangent_at(problem, pre, z, t0, t, n_factor)
    end subroutine lj_point_at
+
+   !> Change of the count of negative eigenvalues across a simple fold at (z, t) of the
+   !> control whose Hessian is singular there: -sign(sum(w sigma''(h) t_h^3)).
+   pure integer function fold_crossing(problem, z, t)
+      type(lj_problem_type), intent(in) :: problem
+      real(wp), intent(in) :: z(:), t(:)
+      integer :: n
+      n = problem%grid%n
+      fold_crossing = -1
+      if (sum(problem%grid%w*law_curvature(problem%law, z(1:n))*t(1:n)**3) < 0.0_wp) &
+         fold_crossing = 1
+   end function fold_crossing
 
    !> Append a point to the branch (arrays grown by doubling).
    subroutine branch_append(problem, branch, z, t, info, s, neg_load, neg_gap, event, extremum)

@@ -56,10 +56,11 @@ install -m 644 include/wavyadhesion.h "$prefix/include/"
 install -m 755 "$stage/bin/wavyadhesion" "$prefix/bin/"
 
 # The shared library, from the archive's objects; --no-undefined: every symbol resolved
-# by GSL and the compiler's runtime, which it records as DT_NEEDED.
+# by GSL, FFTW3 (with its threads library: fftw_make_planner_thread_safe) and the
+# compiler's runtime, which it records as DT_NEEDED.
 "$fc" -shared -o "$prefix/lib/libwavyadhesion.so.$version" -Wl,-soname,"$soname" \
    -Wl,--no-undefined -Wl,--whole-archive "$stage/lib/libwavyadhesion.a" \
-   -Wl,--no-whole-archive $(pkg-config --libs gsl) -lm
+   -Wl,--no-whole-archive $(pkg-config --libs gsl) -lfftw3_threads $(pkg-config --libs fftw3) -lm
 ln -sf "libwavyadhesion.so.$version" "$prefix/lib/$soname"
 ln -sf "$soname" "$prefix/lib/libwavyadhesion.so"
 
@@ -84,10 +85,10 @@ fmoddir=\${includedir}/wavyadhesion/$compiler_id
 Name: wavyadhesion
 Description: Adhesive contact of a wavy elastic surface (Westergaard, JKR, double-Westergaard, Maugis-Dugdale)
 Version: $version
-Requires.private: gsl
+Requires.private: gsl fftw3
 Cflags: -I\${includedir} -I\${fmoddir}
 Libs: -L\${libdir} -lwavyadhesion
-Libs.private: -l:$gfortran_soname -lm
+Libs.private: -lfftw3_threads -l:$gfortran_soname -lm
 EOF
 
 cat > "$prefix/lib/cmake/wavyadhesion/wavyadhesion-config.cmake" <<EOF
@@ -96,7 +97,8 @@ cat > "$prefix/lib/cmake/wavyadhesion/wavyadhesion-config.cmake" <<EOF
 #   target_link_libraries(app PRIVATE wavyadhesion::wavyadhesion)         # shared
 #   target_link_libraries(app PRIVATE wavyadhesion::wavyadhesion_static)  # static
 # Both targets carry the include directories (C header; Fortran module of $compiler_id).
-# The static one also links GSL (CMake's FindGSL: GSL::gsl) and, for projects without
+# The static one also links GSL (CMake's FindGSL: GSL::gsl), FFTW3 (fftw3_threads, fftw3)
+# and, for projects without
 # Fortran enabled, the gfortran runtime; the shared library records them itself.
 cmake_minimum_required(VERSION 3.14)
 get_filename_component(_wavyadhesion_prefix "\${CMAKE_CURRENT_LIST_DIR}/../../.." ABSOLUTE)
@@ -113,7 +115,7 @@ if(NOT TARGET wavyadhesion::wavyadhesion_static)
    include(CMakeFindDependencyMacro)
    find_dependency(GSL)
    add_library(wavyadhesion::wavyadhesion_static STATIC IMPORTED)
-   set(_wavyadhesion_libs GSL::gsl)
+   set(_wavyadhesion_libs GSL::gsl fftw3_threads fftw3)
    get_property(_wavyadhesion_languages GLOBAL PROPERTY ENABLED_LANGUAGES)
    if(NOT "Fortran" IN_LIST _wavyadhesion_languages)
       list(APPEND _wavyadhesion_libs "-l:$gfortran_soname")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the project needs on Debian 12 when it is missing, and does nothing more
 # when everything is present:
-#   apt-get:  gfortran, libgsl-dev, pkg-config; for the Python parts also python3-venv
+#   apt-get:  gfortran, libgsl-dev, libfftw3-dev, pkg-config; for the Python parts also python3-venv
 #             (when `python3 -m venv` cannot work) and python3-dev (Python.h, for f2py);
 #             for the API reference libjs-bootstrap5 (FORD's pages without a CDN);
 #   pip:      into the project's virtual environment .venv (git-ignored), never into the
@@ -28,6 +28,8 @@ command -v "$python" >/dev/null || { echo "tools/setup.sh: python3 not found (ap
 need_apt=()
 command -v gfortran >/dev/null || need_apt+=(gfortran)
 [ -e /usr/include/gsl/gsl_sf_ellint.h ] || need_apt+=(libgsl-dev)
+# FFTW3: the smooth-adhesion model's stiffness products (and its threads library)
+[ -e /usr/include/fftw3.h ] || need_apt+=(libfftw3-dev)
 command -v pkg-config >/dev/null || need_apt+=(pkg-config)
 # A virtual environment needs venv and ensurepip (Debian: python3-venv).
 "$python" -c "import venv, ensurepip" 2>/dev/null || need_apt+=(python3-venv)

@@ -1,5 +1,7 @@
 !> Benchmark of the smooth-adhesion (Lennard-Jones) cycle. Prints figures; asserts nothing.
-!>   fpm run --profile release --example wavyadhesion-lj-benchmark [-- --max-n N]
+!>   fpm run --profile release --example wavyadhesion-lj-benchmark [-- --max-n N] [--cap T]
+!> N = 256 .. max-n (default 8192); a size whose predicted cost (from the last one and
+!> the growth so far) exceeds the cap T seconds (default 60) is skipped with the reason.
 !> One cycle = trace from far apart to full contact, both paths, P_fc*, P_pf*, W*.
 program bench_lj
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -11,24 +13,30 @@ program bench_lj
    character(len=256) :: msg
    type(params_type) :: params
    type(lj_cycle_type) :: cyc
-   real(wp) :: t, ln(8), lt(8), slope, values(4, 8)
+   real(wp) :: t, ln(8), lt(8), slope, values(4, 8), cap, predicted
    integer :: sizes(8)
 
-   max_n = 1024
+   max_n = 8192
+   cap = 60.0_wp
    i_arg = 1
    do while (i_arg <= command_argument_count())
       call get_command_argument(i_arg, arg)
       select case (arg)
       case ("--help", "-h")
-         write (*, '(a)') "usage: wavyadhesion-lj-benchmark [--max-n N]", &
+         write (*, '(a)') "usage: wavyadhesion-lj-benchmark [--max-n N] [--cap SECONDS]", &
             "Times the smooth-adhesion cycle at alpha 0.3, mu 3 (automatic grid, with its", &
-            "error estimate), the cost of one cycle for N = 256 .. max-n (default 1024,", &
-            "at most 4096) with the fitted growth exponent, and the convergence table."
+            "error estimate), the cost of one cycle for N = 256 .. max-n (default 8192,", &
+            "at most 8192; a size predicted above the cap, default 60 s, is skipped) with", &
+            "the fitted growth exponent, and the convergence table."
          stop
       case ("--max-n")
          i_arg = i_arg + 1
          call get_command_argument(i_arg, arg)
          read (arg, *) max_n
+      case ("--cap")
+         i_arg = i_arg + 1
+         call get_command_argument(i_arg, arg)
+         read (arg, *) cap
       case default
          write (error_unit, '(a)') "wavyadhesion-lj-benchmark: unknown argument '"// &
             trim(arg)//"' (try --help)"
@@ -58,7 +66,18 @@ program bench_lj
    write (*, '(/,a)') "    N   CPU [s]             P_pf*                P_fc*                snap                 W*"
    m = 0
    n = 256
-   do while (n <= min(max_n, 4096))
+   do while (n <= min(max_n, 8192))
+      if (m >= 1) then
+         slope = 1.5_wp                   ! the growth so far, at least N^1.5
+         if (m >= 2) slope = max(slope, slope_of(m))
+         predicted = exp(lt(m))*2.0_wp**slope
+         if (predicted > cap) then
+            write (*, '(i6,a,f8.1,a,f6.1,a)') n, "  skipped: predicted ", predicted, &
+               " s is above the cap of ", cap, " s (--cap)"
+            n = 2*n
+            cycle
+         end if
+      end if
       t = seconds()
       call lj_cycle(params, cyc, status, msg, n=n, estimate=.false.)
       t = seconds() - t
@@ -72,8 +91,7 @@ program bench_lj
       n = 2*n
    end do
    if (m >= 2) then
-      slope = (m*sum(ln(1:m)*lt(1:m)) - sum(ln(1:m))*sum(lt(1:m)))/ &
-         (m*sum(ln(1:m)**2) - sum(ln(1:m))**2)
+      slope = slope_of(m)
       write (*, '(a,f6.2)') "fitted growth exponent of the cycle cost in N: ", slope
       write (*, '(/,a)') "relative change from N/2 to N:   P_pf*      P_fc*      snap       W*"
       do k = 2, m
@@ -83,6 +101,13 @@ program bench_lj
    end if
 
 contains
+
+   !> Least-squares slope of log(cost) against log(N) over the first k sizes.
+   real(wp) function slope_of(k)
+      integer, intent(in) :: k
+      slope_of = (k*sum(ln(1:k)*lt(1:k)) - sum(ln(1:k))*sum(lt(1:k)))/ &
+         (k*sum(ln(1:k)**2) - sum(ln(1:k))**2)
+   end function slope_of
 
    !> Processor time of this (single-threaded) process: the one-core cost, unaffected
    !> by other processes sharing the machine.

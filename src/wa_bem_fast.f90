@@ -1,0 +1,281 @@
+!> The smooth-adhesion model's operators at large N (doc/theory.md, "Smooth adhesion"):
+!> the stiffness applied by FFT (the circulant K is diagonal in Fourier space, its symbol
+!> |k|), and a two-grid preconditioner for the unweighted Hessian A = K + diag(sigma')
+!> that needs no dense factorisation of the fine grid: Chebyshev-Jacobi smoothing (one
+!> FFT product per step) and a coarse-grid correction by the Galerkin operator P^T A P
+!> (P: periodic linear interpolation; P^T K P is circulant, P^T diag P tridiagonal),
+!> factorised densely on the coarse grid. Everything acts on the whole period; an even
+!> field is unfolded first and the coarse system folded to its even half.
+module wa_bem_fast
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_double
+   use wa_kinds, only: wp
+   use wa_fftw, only: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
+      fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r
+   use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
+   implicit none
+   private
+
+   public :: fft_plans_type, plans_create, plans_destroy, circulant_symbol, circulant_apply
+   public :: twogrid_type, coarse_stiffness, twogrid_setup, twogrid_apply
+
+   !> The FFTW plans of one period length, owned by the caller's workspace.
+   type :: fft_plans_type
+      integer :: np = 0
+      type(c_ptr) :: fwd = c_null_ptr, bwd = c_null_ptr
+   end type fft_plans_type
+
+   !> A two-grid preconditioner at one state: fine slope, Jacobi scaling, coarse factor.
+   type :: twogrid_type
+      integer :: np = 0, nc = 0, ratio = 0
+      logical :: even = .true.
+      real(wp), allocatable :: d(:), dinv(:)
+      type(ldl_type) :: coarse
+   end type twogrid_type
+
+   !> Chebyshev smoothing: degree, and the interval of the Jacobi-scaled spectrum it damps
+   !> (the upper end bounds (N/2 + d)/(N/4 + d); the lower end, times the grid ratio, is
+   !> the scaled symbol at the coarse grid's Nyquist mode)
+   integer, parameter :: cheb_degree = 3
+   real(wp), parameter :: cheb_top = 2.2_wp, cheb_bottom_ratio = 1.5_wp
+
+contains
+
+   !> Plans for the halfcomplex transforms of length np (FFTW_ESTIMATE: no trial runs).
+   subroutine plans_create(plans, np)
+      type(fft_plans_type), intent(inout) :: plans
+      integer, intent(in) :: np
+      real(c_double), allocatable :: x(:), y(:)
+      call plans_destroy(plans)
+      allocate (x(np), y(np))
+      call fftw_make_planner_thread_safe()
+      plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+      plans%bwd = fftw_plan_r2r_1d(np, y, x, fftw_hc2r, ior(fftw_estimate, fftw_unaligned))
+      plans%np = np
+   end subroutine plans_create
+
+   subroutine plans_destroy(plans)
+      type(fft_plans_type), intent(inout) :: plans
+      if (c_associated(plans%fwd)) call fftw_destroy_plan(plans%fwd)
+      if (c_associated(plans%bwd)) call fftw_destroy_plan(plans%bwd)
+      plans%fwd = c_null_ptr
+      plans%bwd = c_null_ptr
+      plans%np = 0
+   end subroutine plans_destroy
+
+   !> Eigenvalues over np of the symmetric circulant with first column col (real), in
+   !> the halfcomplex order (entry k and np - k both hold the eigenvalue of mode k).
+   subroutine circulant_symbol(col, symbol)
+      real(wp), intent(in) :: col(0:)
+      real(wp), intent(out) :: symbol(0:)
+      type(fft_plans_type) :: plans
+      real(c_double), allocatable :: x(:), y(:)
+      integer :: np, k
+      np = size(col)
+      call plans_create(plans, np)
+      allocate (x(0:np - 1), y(0:np - 1))
+      x = col
+      call fftw_execute_r2r(plans%fwd, x, y)
+      call plans_destroy(plans)
+      symbol(0:np/2) = y(0:np/2)/np        ! real parts: the eigenvalues (col is even)
+      do k = 1, (np - 1)/2
+         symbol(np - k) = symbol(k)
+      end do
+   end subroutine circulant_symbol
+
+   !> y = C x for the circulant C of the given symbol (circulant_symbol), whole period.
+   subroutine circulant_apply(plans, symbol, x, y)
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: symbol(0:), x(0:)
+      real(wp), intent(out) :: y(0:)
+      real(c_double) :: xw(size(x)), c(size(x))
+      type(fft_plans_type) :: own
+      xw = x
+      if (c_associated(plans%fwd)) then
+         call fftw_execute_r2r(plans%fwd, xw, c)
+         c = c*symbol
+         call fftw_execute_r2r(plans%bwd, c, xw)
+      else                                   ! no plans at hand: make and drop them
+         call plans_create(own, size(x))
+         call fftw_execute_r2r(own%fwd, xw, c)
+         c = c*symbol
+         call fftw_execute_r2r(own%bwd, c, xw)
+         call plans_destroy(own)
+      end if
+      y = xw
+   end subroutine circulant_apply
+
+   !> First column of the coarse circulant P^T K P (coarse period nc = np/ratio) from the
+   !> fine circulant's column kcol.
+   subroutine coarse_stiffness(kcol, symbol, ratio, kc)
+      real(wp), intent(in) :: kcol(0:), symbol(0:)
+      integer, intent(in) :: ratio
+      real(wp), intent(out) :: kc(0:)
+      real(wp), allocatable :: hat(:), v(:)
+      type(fft_plans_type) :: none
+      integer :: np, f, m
+      np = size(kcol)
+      allocate (hat(0:np - 1), v(0:np - 1))
+      hat = 0.0_wp
+      do f = -(ratio - 1), ratio - 1
+         hat(modulo(f, np)) = 1.0_wp - real(abs(f), wp)/ratio
+      end do
+      call circulant_apply(none, symbol, hat, v)
+      do m = 0, size(kc) - 1
+         kc(m) = 0.0_wp
+         do f = -(ratio - 1), ratio - 1
+            kc(m) = kc(m) + hat(modulo(f, np))*v(modulo(ratio*m + f, np))
+         end do
+      end do
+   end subroutine coarse_stiffness
+
+   !> The preconditioner at the fine slope d (whole period, unweighted), with the coarse
+   !> circulant column kc (coarse_stiffness); even: the fields are even. The coarse
+   !> system's negative and zero eigenvalues are counted by its factorisation.
+   pure subroutine twogrid_setup(d, kc, ratio, even, tg)
+      real(wp), intent(in) :: d(0:), kc(0:)
+      integer, intent(in) :: ratio
+      logical, intent(in) :: even
+      type(twogrid_type), intent(inout) :: tg
+      real(wp), allocatable :: a(:, :), t0(:), t1(:)
+      integer :: np, nc, i, j, f, jj, m
+      real(wp) :: u
+      np = size(d)
+      nc = np/ratio
+      tg%np = np; tg%nc = nc; tg%ratio = ratio; tg%even = even
+      tg%d = d
+      tg%dinv = 1.0_wp/(0.25_wp*np + max(d, 0.0_wp))
+      allocate (a(0:nc - 1, 0:nc - 1), t0(0:nc - 1), t1(0:nc - 1))
+      do j = 0, nc - 1                 ! P^T diag(d) P: diagonal and the super-diagonal
+         t0(j) = d(ratio*j)
+         t1(j) = 0.0_wp
+         do f = 1, ratio - 1
+            u = real(f, wp)/ratio
+            t0(j) = t0(j) + (1.0_wp - u)**2*d(modulo(ratio*j + f, np)) + &
+               u**2*d(modulo(ratio*j - f, np))
+            t1(j) = t1(j) + (1.0_wp - u)*u*d(modulo(ratio*j + f, np))
+         end do
+      end do
+      do j = 0, nc - 1
+         do i = 0, nc - 1
+            a(i, j) = kc(modulo(i - j, nc))
+         end do
+         a(j, j) = a(j, j) + t0(j)
+         a(modulo(j + 1, nc), j) = a(modulo(j + 1, nc), j) + t1(j)
+         a(j, modulo(j + 1, nc)) = a(j, modulo(j + 1, nc)) + t1(j)
+      end do
+      if (even) then                   ! fold onto the even half, weighted: symmetric
+         m = nc/2 + 1
+         if (allocated(tg%coarse%a)) deallocate (tg%coarse%a)
+         allocate (tg%coarse%a(m, m))
+         do j = 0, m - 1
+            jj = modulo(nc - j, nc)
+            do i = 0, m - 1
+               tg%coarse%a(i + 1, j + 1) = a(i, j)
+               if (j > 0 .and. j < m - 1) tg%coarse%a(i + 1, j + 1) = &
+                  tg%coarse%a(i + 1, j + 1) + a(i, jj)
+               if (i > 0 .and. i < m - 1) tg%coarse%a(i + 1, j + 1) = 2.0_wp*tg%coarse%a(i + 1, j + 1)
+            end do
+         end do
+      else
+         tg%coarse%a = a
+      end if
+      call ldl_factor(tg%coarse)
+   end subroutine twogrid_setup
+
+   !> x ~ A^-1 r on the whole period: Chebyshev smoothing, coarse correction, smoothing.
+   subroutine twogrid_apply(tg, plans, symbol, r, x)
+      type(twogrid_type), intent(in) :: tg
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: symbol(0:), r(0:)
+      real(wp), intent(out) :: x(0:)
+      real(wp), allocatable :: res(:), dx(:)
+      allocate (res(0:tg%np - 1), dx(0:tg%np - 1))
+      call chebyshev(tg, plans, symbol, r, x)
+      call apply_a(tg, plans, symbol, x, res)
+      res = r - res
+      call coarse_correct(tg, res, dx)
+      x = x + dx
+      call apply_a(tg, plans, symbol, x, res)
+      res = r - res
+      call chebyshev(tg, plans, symbol, res, dx)
+      x = x + dx
+   end subroutine twogrid_apply
+
+   !> y = (K + diag d) x on the whole period.
+   subroutine apply_a(tg, plans, symbol, x, y)
+      type(twogrid_type), intent(in) :: tg
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: symbol(0:), x(0:)
+      real(wp), intent(out) :: y(0:)
+      call circulant_apply(plans, symbol, x, y)
+      y = y + tg%d*x
+   end subroutine apply_a
+
+   !> cheb_degree steps of Chebyshev iteration on diag^-1 A x = diag^-1 r from x = 0.
+   subroutine chebyshev(tg, plans, symbol, r, x)
+      type(twogrid_type), intent(in) :: tg
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: symbol(0:), r(0:)
+      real(wp), intent(out) :: x(0:)
+      real(wp), allocatable :: res(:), p(:), ap(:)
+      real(wp) :: theta, delta, sigma, rho, rho_new, bottom
+      integer :: k
+      allocate (res(0:tg%np - 1), p(0:tg%np - 1), ap(0:tg%np - 1))
+      bottom = cheb_bottom_ratio/tg%ratio
+      theta = 0.5_wp*(cheb_top + bottom)
+      delta = 0.5_wp*(cheb_top - bottom)
+      sigma = theta/delta
+      rho = 1.0_wp/sigma
+      res = r
+      p = tg%dinv*res/theta
+      x = 0.0_wp
+      do k = 1, cheb_degree
+         x = x + p
+         if (k == cheb_degree) exit
+         call apply_a(tg, plans, symbol, p, ap)
+         res = res - ap
+         rho_new = 1.0_wp/(2.0_wp*sigma - rho)
+         p = rho_new*rho*p + (2.0_wp*rho_new/delta)*tg%dinv*res
+         rho = rho_new
+      end do
+   end subroutine chebyshev
+
+   !> dx = P A_c^-1 P^T res (A_c = P^T A P, on the even half where even).
+   pure subroutine coarse_correct(tg, res, dx)
+      type(twogrid_type), intent(in) :: tg
+      real(wp), intent(in) :: res(0:)
+      real(wp), intent(out) :: dx(0:)
+      real(wp), allocatable :: rc(:), xc(:), b(:)
+      integer :: j, f, r, np, nc, m
+      real(wp) :: u
+      r = tg%ratio; np = tg%np; nc = tg%nc
+      allocate (rc(0:nc - 1), xc(0:nc - 1))
+      do j = 0, nc - 1
+         rc(j) = res(r*j)
+         do f = 1, r - 1
+            u = real(f, wp)/r
+            rc(j) = rc(j) + (1.0_wp - u)*res(modulo(r*j + f, np)) + (1.0_wp - u)*res(modulo(r*j - f, np))
+         end do
+      end do
+      if (tg%even) then
+         m = nc/2 + 1
+         b = rc(0:m - 1)
+         b(2:m - 1) = 2.0_wp*b(2:m - 1)
+         call ldl_solve(tg%coarse, b)
+         xc(0:m - 1) = b
+         do j = 1, m - 2
+            xc(nc - j) = b(j + 1)
+         end do
+      else
+         xc = rc
+         call ldl_solve(tg%coarse, xc)
+      end if
+      do j = 0, nc - 1
+         do f = 0, r - 1
+            u = real(f, wp)/r
+            dx(r*j + f) = (1.0_wp - u)*xc(j) + u*xc(modulo(j + 1, nc))
+         end do
+      end do
+   end subroutine coarse_correct
+
+end module wa_bem_fast
