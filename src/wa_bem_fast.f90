@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> The smooth-adhesion model's operators at large N (doc/theory.md, "Smooth adhesion"):
 !> the stiffness applied by FFT (the circulant K is diagonal in Fourier space, its symbol
 !> |k|), and a two-grid preconditioner for the unweighted Hessian A = K + diag(sigma')

@@ -1,3 +1,5 @@
+!> display: none
+!>
 !> Raw `bind(C)` interfaces to the parts of FFTW3 the library uses (real-to-real
 !> transforms of one dimension, to and from the halfcomplex order). Not re-exported.
 !>
@@ -9,8 +11,8 @@ module wa_fftw
    implicit none
    private
 
-   !> FFTW_ESTIMATE: plan by heuristics, without trial transforms (the arrays are left
-   !> untouched); FFTW_UNALIGNED: the plan may be executed on arrays of any alignment.
+   !> Planner flags. FFTW_ESTIMATE plans by heuristics, without trial transforms (the arrays are left
+   !> untouched); with FFTW_UNALIGNED the plan may be executed on arrays of any alignment.
    integer(c_int), parameter, public :: fftw_estimate = 64, fftw_unaligned = 2
    !> Kinds of r2r transform: real to halfcomplex and back (unnormalised)
    integer(c_int), parameter, public :: fftw_r2hc = 0, fftw_hc2r = 1
