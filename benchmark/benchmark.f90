@@ -1,5 +1,5 @@
 !> Benchmark of the performance targets (doc/accuracy-performance.md). Prints figures; asserts nothing.
-!>   fpm run --profile release --example wavyadhesion-benchmark
+!>   cd study && fpm run --profile release wavyadhesion-benchmark
 program benchmark
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use wavyadhesion

@@ -3,7 +3,7 @@
 !> (doc/accuracy-performance.md: the accuracy and performance targets). Prints tables; writes the data of
 !> the tables and plots into the output directory (default build/study).
 !>
-!>   fpm run --profile release --example wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
+!>   cd study && fpm run --profile release wavyadhesion-study -- [command] [--quick] [--no-peer] [--out DIR]
 !>   commands: all (default: dw md peer curve extreme), dw, md, peer, curve, extreme,
 !>             samples (writes study/data/samples.txt for tools/reference/study_reference.py check)
 !>   --quick: every 7th point of the work-precision sets; --no-peer: skip scipy.
@@ -17,7 +17,7 @@ program wavyadhesion_study
    use wavyadhesion
    use wa_kinds, only: wp
    use wa_gsl, only: gsl_set_error_handler_off
-   use wa_study_util, only: seconds, median, spec_error, ref_table, read_table, point_set, &
+   use wa_study_util, only: to_repository_root, seconds, median, spec_error, ref_table, read_table, point_set, &
       ref_states_of
    use wa_dw, only: dw_options, dw_istar_carlson, dw_istar_tanh_sinh, dw_istar_qag
    use wa_md, only: md_options, md_prepare_options, md_psi_gauss, md_psi_qaws, md_psi_qag, &
@@ -49,6 +49,7 @@ program wavyadhesion_study
 
    old_handler = gsl_set_error_handler_off()
    command = "all"
+   call to_repository_root()
    out_dir = "build/study"
    quick = .false.
    run_peer = .true.

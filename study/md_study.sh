@@ -3,7 +3,7 @@
 # repository root: Psi_c quadrature error vs time (wavyadhesion-psi-quadrature), time per
 # equilibrium (wavyadhesion-md-timing) and a brute-force check of the root bracketing
 # (wavyadhesion-md-root-scan, about 30 minutes on one core). fpm builds them with the
-# library (release profile, fpm.toml's [[example]] entries under study/verify/).
+# library (release profile, the study's own package: study/fpm.toml).
 # Usage: sh study/md_study.sh [study|timing|scan]...   (default: study timing)
 set -e
 fpm=fpm
@@ -16,5 +16,5 @@ for what in "$@"; do
       scan)   prog=wavyadhesion-md-root-scan ;;
       *) echo "study/md_study.sh: unknown: $what (study, timing or scan)" >&2; exit 2 ;;
    esac
-   "$fpm" run --profile release --example "$prog"
+   (cd study && "$fpm" run --profile release "$prog")
 done

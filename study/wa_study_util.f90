@@ -8,7 +8,7 @@ module wa_study_util
    private
 
    public :: seconds, median, sort_real, spec_error, ref_table, read_table, point_set
-   public :: ref_states_of
+   public :: ref_states_of, to_repository_root
 
    !> The rows of one reference table.
    type :: ref_table
@@ -25,6 +25,17 @@ module wa_study_util
    end type point_set
 
 contains
+
+   !> The study reads and writes paths relative to the repository's root (test/data,
+   !> study/data, build/study): run from study/ (where its fpm package is), it moves there
+   !> first (GNU chdir).
+   subroutine to_repository_root()
+      intrinsic :: chdir
+      logical :: here, above
+      inquire (file="test/data/dw.txt", exist=here)
+      inquire (file="../test/data/dw.txt", exist=above)
+      if (.not. here .and. above) call chdir("..")
+   end subroutine to_repository_root
 
    !> Wall-clock seconds (system_clock, int64: ns resolution here).
    real(wp) function seconds()

@@ -2,7 +2,7 @@
 # Runs every test (after `bash tools/setup.sh`), with the project's virtual environment
 # .venv first on PATH:
 #   1. fpm test --profile release: the Fortran unit tests (unit) and the C-interface
-#      test (capi);
+#      test (capi); then the study's programs (study/fpm.toml) are built;
 #   2. installs the Python package ./python into .venv;
 #   3. pytest over the command line (test/cli), the Python package (python/tests), the
 #      docs (test/docs: commands and numbers quoted in README.md and doc/*.md, the FORD
@@ -17,6 +17,8 @@ export PATH="$PWD/.venv/bin:$PATH"
 export FPM_FFLAGS="${FPM_FFLAGS:+$FPM_FFLAGS }-Werror=trampolines"
 
 fpm test --profile release
+# The study, verification and benchmark programs (their own fpm package): they must build.
+(cd study && fpm build --profile release)
 python -m pip install --quiet --disable-pip-version-check ./python
 # pytest exits 5 when it collected no tests; set -e makes that (like any failure) fatal.
 python -m pytest -q test/cli python/tests test/docs test/consumers

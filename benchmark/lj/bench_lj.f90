@@ -1,5 +1,5 @@
 !> Benchmark of the smooth-adhesion (Lennard-Jones) cycle. Prints figures; asserts nothing.
-!>   fpm run --profile release --example wavyadhesion-lj-benchmark [-- --max-n N] [--cap T]
+!>   cd study && fpm run --profile release wavyadhesion-lj-benchmark [-- --max-n N] [--cap T]
 !> N = 256 .. max-n (default 8192); a size whose predicted cost (from the last one and
 !> the growth so far) exceeds the cap T seconds (default 60) is skipped with the reason.
 !> One cycle = trace from far apart to full contact, both paths, P_fc*, P_pf*, W*.

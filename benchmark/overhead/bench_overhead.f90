@@ -1,7 +1,7 @@
 !> Pure-Fortran baseline for python/benchmarks/bench_overhead.py: the principal DW
 !> equilibrium at alpha = 0.3, mu = 1 on n points a*_i = i/(2(n+1)), i = 1..n, stored
 !> into three arrays, as the Python facade does. Prints the best of `repeats` timings.
-!>   fpm run --profile release --example bench_overhead -- [n [repeats]]
+!>   cd study && fpm run --profile release bench_overhead -- [n [repeats]]
 program bench_overhead
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use wa_kinds, only: wp

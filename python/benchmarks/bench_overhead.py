@@ -39,9 +39,9 @@ def fortran_seconds(n, repeats):
     repo = Path(os.environ.get("WAVYADHESION_REPO", Path(__file__).resolve().parents[2]))
     if not (repo / "benchmark" / "overhead" / "bench_overhead.f90").is_file() or shutil.which("fpm") is None:
         return None
-    cmd = ["fpm", "run", "--profile", "release", "--example", "bench_overhead", "--",
+    cmd = ["fpm", "run", "--profile", "release", "bench_overhead", "--",
            str(n), str(repeats)]
-    out = subprocess.run(cmd, cwd=repo, capture_output=True, text=True, check=True).stdout
+    out = subprocess.run(cmd, cwd=repo / "study", capture_output=True, text=True, check=True).stdout
     match = re.search(r"fortran_seconds\s+(\S+)", out)
     return float(match.group(1)) if match else None
 

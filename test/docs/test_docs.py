@@ -483,3 +483,15 @@ def test_no_citation_of_files_outside_the_repository():
         bad += [f"{rel}:{text.count(chr(10), 0, m.start()) + 1}: {m.group(0)}"
                 for m in OUTSIDE.finditer(text)]
     assert not bad, bad
+
+
+def test_cli_build_builds_only_what_it_needs():
+    """`fpm run wavyadhesion` builds the library, the command line and the tests only: the
+    study, verification and benchmark programs are a package of their own (study/fpm.toml)."""
+    root = (REPO / "fpm.toml").read_text()
+    assert "[[example]]" not in root
+    study = (REPO / "study" / "fpm.toml").read_text()
+    assert 'wavyadhesion = { path = ".." }' in study
+    for name in ["wavyadhesion-study", "wavyadhesion-benchmark", "wavyadhesion-lj-benchmark",
+                 "wavyadhesion-mapcheck", "wavyadhesion-gapcheck"]:
+        assert f'name = "{name}"' in study, name

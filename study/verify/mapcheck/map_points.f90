@@ -4,7 +4,7 @@
 !> per control and every point that differs by more than 1e-8 or whose bracket holds no
 !> single change. The unit test `map` does this for DW at 20 alpha and MD at 2 (it must
 !> stay fast); this does MD (or DW) at 20.
-!>   fpm run --profile release --example wavyadhesion-mapcheck [-- dw|md [N_ALPHA]]
+!>   cd study && fpm run --profile release wavyadhesion-mapcheck [-- dw|md [N_ALPHA]]
 program map_points
    use wavyadhesion
    use wa_kinds, only: wp

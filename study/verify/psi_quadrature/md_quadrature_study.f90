@@ -18,7 +18,7 @@
 !>   qag      GSL QAG (GK21) on the whole integrand, epsrel tol
 !>   qags     GSL QAGS (extrapolating) on the whole integrand, epsrel tol
 !> GSL workspaces and tables are allocated and freed per call, as a library would.
-!> Run from the repository root: fpm run --profile release --example wavyadhesion-psi-quadrature
+!> Run from the repository root: cd study && fpm run --profile release wavyadhesion-psi-quadrature
 !> (or sh study/md_study.sh study).
 program md_quadrature_study
    use, intrinsic :: iso_c_binding, only: c_funptr
@@ -39,7 +39,11 @@ program md_quadrature_study
    real(wp) :: rule16(4, 16), rule32(4, 32), rule64(4, 64)
 
    old = gsl_set_error_handler_off()
-   open (newunit=u, file="tools/reference/md_psi_reference.txt", status="old", action="read")
+   ! from the repository root, or from study/ (where the study's fpm package is)
+   open (newunit=u, file="tools/reference/md_psi_reference.txt", status="old", action="read", &
+      iostat=ios)
+   if (ios /= 0) open (newunit=u, file="../tools/reference/md_psi_reference.txt", &
+      status="old", action="read")
    n = 0
    do
       read (u, '(a)', iostat=ios) line

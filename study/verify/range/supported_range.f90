@@ -1,5 +1,5 @@
 !> Measures the supported range of every entry point (doc/theory.md, "Supported range"):
-!>   fpm run --profile release --example wavyadhesion-range
+!>   cd study && fpm run --profile release wavyadhesion-range
 !> 1. Point solvers (dw/md_equilibrium, dw/md_roots) over the whole accepted domain
 !>    (alpha 1e-12 .. 1e12, mu 0 and 1e-100 .. 1e100, a* from 0 to 1/2): status counts per
 !>    a* band, every wa_ok state checked for consistency (finite, a* <= c* <= 1/2, zone case),

@@ -1,7 +1,7 @@
 !> Prints W* (gap control) with the default quadrature (16-node Gauss-Legendre panels)
 !> and with 20-node panels on halved pieces, and their relative difference, for the cases
 !> quoted in doc/theory.md "Gap control":
-!>   fpm run --profile release --example wavyadhesion-gapcheck
+!>   cd study && fpm run --profile release wavyadhesion-gapcheck
 !> With --sweep: gap_path for DW and MD over alpha in {0.01, 0.1, 0.3, 0.6, 1, 3, 10} x 31
 !> log-spaced mu in [1e-3, 1e3]: failures, and the largest difference of the two rules.
 program gap_quadrature
