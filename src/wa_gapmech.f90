@@ -26,11 +26,11 @@ module wa_gapmech
    use wa_params, only: params_type, new_params
    use wa_state, only: zone_no_contact, zone_inside
    use wa_branch, only: branch_type, trace_branch
-   use wa_loadpath, only: a_point_pull_off
-   use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
-      bisection_tell, bisection_result
-   use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
-      gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
+   use wa_mechanism, only: a_point_pull_off, mechanism_bisection, bisection_start, &
+      bisection_next, bisection_tell, bisection_result
+   use wa_gappath, only: gap_path_type, gap_stage_approach, gap_stage_retraction, &
+      gap_event_jump_start, gap_event_jump_end
+   use wa_gapcritical, only: gap_cycle_critical
    implicit none
    private
 
