@@ -14,6 +14,7 @@ module wa_chain_extrema
    use wa_state, only: state_type, zone_no_contact, zone_inside, model_md, model_dw
    use wa_curve, only: curve_variable, curve_weight, curve_y_max
    use wa_branch, only: event_switch
+   use wa_roots, only: minimum_type, minimum_init, minimum_propose, minimum_accept
    use wa_chain, only: chain_type, chain_insert, chain_state, param_kind, param, &
       below_tracer, state_at_param, local_state, solve_at_y, solve_at_a
    implicit none
@@ -287,72 +288,26 @@ contains
       end function closure_or_inside
 
       !> Brent's minimisation of -sgn gbar* over [a, b] (golden sections and parabolic
-      !> steps) to 1e-9 of the bracket, x to ~sqrt(eps) of it in any case (gbar* is flat
-      !> there): the vertex refinement below does the rest. s: the state at x.
+      !> steps; wa_roots) to 1e-9 of the bracket, x to ~sqrt(eps) of it in any case (gbar*
+      !> is flat there): the vertex refinement below does the rest. s: the state at x.
       subroutine brent_minimum(a_in, b_in, x)
          real(wp), intent(in) :: a_in, b_in
          real(wp), intent(out) :: x
-         real(wp), parameter :: c = 0.3819660112501051518_wp
-         real(wp) :: a, b, v, w, fv, fw, fx, d, e, m, tol, t2, pp, q, rr, u, fu
+         type(minimum_type) :: mn
          type(state_type) :: su
+         real(wp) :: u
+         logical :: done
          integer :: it
-         a = a_in; b = b_in
-         x = a + c*(b - a); v = x; w = x
-         call solve(x, s)
-         if (status /= wa_ok) return
-         fx = -sgn*s%gbar; fv = fx; fw = fx
-         d = 0.0_wp; e = 0.0_wp
-         do it = 1, 100
-            m = 0.5_wp*(a + b)
-            tol = 1.0e-9_wp*abs(b_in - a_in) + 1.0e-300_wp
-            t2 = 2.0_wp*tol
-            if (abs(x - m) <= t2 - 0.5_wp*(b - a)) exit
-            pp = 0.0_wp; q = 0.0_wp; rr = 0.0_wp
-            if (abs(e) > tol) then                   ! a parabola through x, w, v
-               rr = (x - w)*(fx - fv)
-               q = (x - v)*(fx - fw)
-               pp = (x - v)*q - (x - w)*rr
-               q = 2.0_wp*(q - rr)
-               if (q > 0.0_wp) then
-                  pp = -pp
-               else
-                  q = -q
-               end if
-               rr = e
-               e = d
-            end if
-            if (abs(pp) < abs(0.5_wp*q*rr) .and. pp > q*(a - x) .and. pp < q*(b - x)) then
-               d = pp/q
-               u = x + d
-               if (u - a < t2 .or. b - u < t2) d = sign(tol, m - x)
-            else                                     ! a golden section
-               e = merge(b - x, a - x, x < m)
-               d = c*e
-            end if
-            u = x + merge(d, sign(tol, d), abs(d) >= tol)
+         call minimum_init(mn, a_in, b_in, 1.0e-9_wp*abs(b_in - a_in) + 1.0e-300_wp)
+         do it = 1, 101                          ! the first point and 100 steps
+            call minimum_propose(mn, u, done)
+            if (done) exit
             call solve(u, su)
             if (status /= wa_ok) return
-            fu = -sgn*su%gbar
-            if (fu <= fx) then
-               if (u < x) then
-                  b = x
-               else
-                  a = x
-               end if
-               v = w; fv = fw; w = x; fw = fx; x = u; fx = fu; s = su
-            else
-               if (u < x) then
-                  a = u
-               else
-                  b = u
-               end if
-               if (fu <= fw .or. w == x) then
-                  v = w; fv = fw; w = u; fw = fu
-               else if (fu <= fv .or. v == x .or. v == w) then
-                  v = u; fv = fu
-               end if
-            end if
+            call minimum_accept(mn, -sgn*su%gbar)
+            if (mn%improved) s = su
          end do
+         x = mn%x
       end subroutine brent_minimum
 
       !> The minimisation leaves x to ~sqrt(eps) of the bracket (gbar* is flat there):

@@ -15,6 +15,7 @@ module wa_gapcritical
    use wa_state, only: state_type, model_jkr
    use wa_models, only: check_model
    use wa_branch, only: branch_type, trace_branch
+   use wa_roots, only: golden_type, golden_init, golden_propose, golden_accept
    use wa_chain, only: chain_type, stretch_type, chain_state, param_kind, param, &
       below_tracer, state_at_param
    use wa_gappath, only: gap_path_type, walk_cycle, max_walked, gap_stage_approach, &
@@ -35,7 +36,7 @@ module wa_gapcritical
 
    !> The critical values of one gap-controlled cycle.
    type :: gap_critical_type
-      !> Approach: gbar* of the first interaction (P* = 0 above it; 1 except for MD)
+      !> On the approach, gbar* of the first interaction (P* = 0 above it; 1 except for MD)
       real(wp) :: g_touch = 1.0_wp
       !> P* and a* where the approach lands when it jumps at g_touch (0 and 0: no jump,
       !> the approach leaves P* = 0 gradually; MD: a* = 0 when it lands on the states
@@ -57,10 +58,16 @@ contains
 
    !> Trace the branch and follow the gap-controlled cycle; its critical values.
    subroutine gap_critical(model, params, crit, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The critical values of the gap-controlled cycle
       type(gap_critical_type), intent(out) :: crit
+      !> wa_ok; wa_invalid_argument for a bad model; else the status of the failing trace
+      !> or cycle
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
       call check_model(model, status, errmsg)
@@ -120,6 +127,7 @@ contains
 
    !> The values of crit in the order of gap_critical_names.
    pure function gap_critical_values(crit) result(v)
+      !> The critical values of one cycle (gap_critical)
       type(gap_critical_type), intent(in) :: crit
       real(wp) :: v(gap_critical_count)
       v = [crit%g_touch, crit%p_jump_in, crit%a_jump_in, crit%g_contact, crit%p_min, &
@@ -135,13 +143,22 @@ contains
    !> the number of failing rows in the message).
    subroutine gap_critical_sweep(model, alpha, mu, values, status, errmsg, row_status, &
          row_errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
-      real(wp), intent(in) :: alpha, mu(:)
+      !> The adhesion parameter alpha (valid range: new_params)
+      real(wp), intent(in) :: alpha
+      !> The values of the elasticity parameter mu, one row each
+      real(wp), intent(in) :: mu(:)
       !> (gap_critical_count, size(mu))
       real(wp), intent(out) :: values(:, :)
+      !> wa_ok; the status of the bad model or alpha, or of the first failing row
       integer, intent(out) :: status
+      !> Receives the reason on failure (the first failing row's mu and message, and the
+      !> number of failing rows)
       character(len=*), intent(inout), optional :: errmsg
+      !> The status of each row (size of mu)
       integer, intent(out), optional :: row_status(:)
+      !> The message of each failing row (blank for the others; size of mu)
       character(len=*), intent(out), optional :: row_errmsg(:)
       type(params_type) :: params
       type(gap_critical_type) :: crit
@@ -293,11 +310,11 @@ contains
       type(state_type), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp), parameter :: c = 0.3819660112501051518_wp
-      type(state_type) :: s1, s2
-      real(wp) :: ua, ub, x1, x2, a_lo, a_hi, tol, u_first, u_last
-      integer :: it
-      logical :: in_log
+      type(state_type) :: st(2), s1
+      type(golden_type) :: gs
+      real(wp) :: ua, ub, x, a_lo, a_hi, tol, u_first, u_last
+      integer :: it, slot
+      logical :: in_log, done, moved
 
       status = wa_ok
       in_log = param_kind(ch, i) == 0
@@ -315,29 +332,21 @@ contains
       end if
       if (.not. (ub > ua)) return
       u_first = ua; u_last = ub
-      x1 = ua + c*(ub - ua); x2 = ub - c*(ub - ua)
-      call solve(x1, s1)
-      if (status /= wa_ok) return
-      call solve(x2, s2)
-      if (status /= wa_ok) return
-      do it = 1, 100
-         if (ub - ua <= tol) exit
-         if (s1%p_star <= s2%p_star) then
-            ub = x2; x2 = x1; s2 = s1
-            x1 = ua + c*(ub - ua)
-            call solve(x1, s1)
-         else
-            ua = x1; x1 = x2; s1 = s2
-            x2 = ub - c*(ub - ua)
-            call solve(x2, s2)
-         end if
+      call golden_init(gs, ua, ub, tol, 0.0_wp)
+      do it = 1, 102                          ! the two first points and 100 sections
+         call golden_propose(gs, x, done, slot, moved)
+         if (done) exit
+         if (moved) st(3 - slot) = st(slot)
+         call solve(x, st(slot))
          if (status /= wa_ok) return
+         call golden_accept(gs, st(slot)%p_star)
       end do
       ! an interior minimum only (both ends of the bracket moved), below the ends by more
       ! than the round-off of the point solves; else P* is monotone (or flat) over the
       ! range and its least value is the end's, a chain point
-      if (ua == u_first .or. ub == u_last) return
-      if (s2%p_star < s1%p_star) s1 = s2
+      if (gs%lo == u_first .or. gs%hi == u_last) return
+      s1 = st(1)
+      if (st(2)%p_star < st(1)%p_star) s1 = st(2)
       if (s1%p_star < s%p_star - 16.0_wp*epsilon(1.0_wp)*abs(s%p_star)) s = s1
    contains
       subroutine solve(u, st)

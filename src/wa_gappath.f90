@@ -56,10 +56,15 @@ contains
 
    !> Trace the branch, then follow approach and retraction under gap control.
    subroutine gap_path(model, params, path, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The approach-retraction cycle: its events in order, W* and W*/(pi alpha^2/2), g_touch
       type(gap_path_type), intent(out) :: path
+      !> wa_ok; else the status of the failing trace, walk or quadrature
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
       call trace_branch(model, params, branch, status, errmsg)
@@ -103,12 +108,28 @@ contains
    !> same panels: equal to the bit), at no extra cost.
    subroutine gap_law(model, params, gbar, p_approach, p_retract, dpdg_approach, &
       dpdg_retract, status, errmsg, w_star, w_fraction)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The mean gaps gbar* (finite, >= 0)
       real(wp), intent(in) :: gbar(:)
-      real(wp), intent(out) :: p_approach(:), p_retract(:), dpdg_approach(:), dpdg_retract(:)
-      real(wp), intent(out), optional :: w_star, w_fraction
+      !> P* on the approach at each gbar(k) (size of gbar)
+      real(wp), intent(out) :: p_approach(:)
+      !> P* on the retraction at each gbar(k) (size of gbar)
+      real(wp), intent(out) :: p_retract(:)
+      !> dP*/dgbar* on the approach at each gbar(k) (size of gbar)
+      real(wp), intent(out) :: dpdg_approach(:)
+      !> dP*/dgbar* on the retraction at each gbar(k) (size of gbar)
+      real(wp), intent(out) :: dpdg_retract(:)
+      !> The energy lost per cycle W* (units p* Delta), as gap_path gives it
+      real(wp), intent(out), optional :: w_star
+      !> W*/(pi alpha^2/2), as gap_path gives it
+      real(wp), intent(out), optional :: w_fraction
+      !> wa_ok; wa_invalid_argument for a bad gbar or output size; else the status of the
+      !> failing trace, walk or quadrature
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
       type(chain_type) :: ch

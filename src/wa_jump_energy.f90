@@ -32,12 +32,21 @@ contains
    !> (a* = 0: the separated state is not on the branch) and at a pull-off (the surfaces
    !> separate under a tensile load: the released energy is unbounded).
    subroutine load_jump_energies(model, params, branch, lpath, energy, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
+      !> The traced branch (trace_branch) that lpath was built from
       type(branch_type), intent(in) :: branch
+      !> The load-controlled path of that branch (path_from_branch)
       type(path_type), intent(in) :: lpath
+      !> The energy released by the jump starting at each event (at least lpath%n
+      !> elements); NaN where no jump starts or its energy is undefined
       real(wp), intent(out) :: energy(:)
+      !> wa_ok; wa_invalid_argument when energy is too short; else the status of the
+      !> failing point solve or quadrature
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(chain_type) :: ch
       type(cover_type) :: cov
