@@ -15,7 +15,8 @@ module wa_branch_step
    use wa_state, only: state_type, zone_inside, zone_whole_period
    use wa_curve, only: curve_residual, curve_values, curve_y_max, curve_weight, &
       curve_equilibrium
-   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept, golden_type, &
+      golden_init, golden_propose, golden_accept
    implicit none
    private
 
@@ -259,25 +260,21 @@ contains
       type(state_type), intent(out) :: s
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      real(wp), parameter :: golden = 0.3819660112501051518_wp
-      real(wp) :: lo, hi, x1, x2, f1, f2
-      integer :: iter
+      type(golden_type) :: gs
+      real(wp) :: x
+      integer :: iter, slot
+      logical :: done, moved
       status = wa_ok
-      lo = min(a1, a2); hi = max(a1, a2)
-      x1 = lo + golden*(hi - lo); x2 = hi - golden*(hi - lo)
-      f1 = sgn*load_at(x1); f2 = sgn*load_at(x2)
-      do iter = 1, 200
-         if (status /= wa_ok .or. hi - lo <= 1.0e-12_wp*hi) exit
-         if (f1 > f2) then
-            hi = x2; x2 = x1; f2 = f1
-            x1 = lo + golden*(hi - lo); f1 = sgn*load_at(x1)
-         else
-            lo = x1; x1 = x2; f1 = f2
-            x2 = hi - golden*(hi - lo); f2 = sgn*load_at(x2)
-         end if
+      ! the maximum of sgn P*: the minimum of -sgn P*, equal values keeping the right part
+      call golden_init(gs, min(a1, a2), max(a1, a2), 0.0_wp, 1.0e-12_wp, ties_left=.false.)
+      do iter = 1, 202                        ! the two first points and 200 sections
+         call golden_propose(gs, x, done, slot, moved)
+         if (done) exit
+         call golden_accept(gs, -sgn*load_at(x))
+         if (status /= wa_ok .and. iter > 1) exit
       end do
       if (status /= wa_ok) return
-      call curve_equilibrium(model, params, 0.5_wp*(lo + hi), c_hint, s, status, errmsg)
+      call curve_equilibrium(model, params, 0.5_wp*(gs%lo + gs%hi), c_hint, s, status, errmsg)
       if (status /= wa_ok) return
       if (s%zone_case /= zone_inside) call set_error(wa_numerical_error, "trace_branch: "// &
          "a fold before a case switch could not be located", status, errmsg)

@@ -26,11 +26,11 @@ module wa_gapmech
    use wa_params, only: params_type, new_params
    use wa_state, only: zone_no_contact, zone_inside
    use wa_branch, only: branch_type, trace_branch
-   use wa_loadpath, only: a_point_pull_off
-   use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
-      bisection_tell, bisection_result
-   use wa_gappath, only: gap_path_type, gap_cycle_critical, gap_stage_approach, &
-      gap_stage_retraction, gap_event_jump_start, gap_event_jump_end
+   use wa_mechanism, only: a_point_pull_off, mechanism_bisection, bisection_start, &
+      bisection_next, bisection_tell, bisection_result
+   use wa_gappath, only: gap_path_type, gap_stage_approach, gap_stage_retraction, &
+      gap_event_jump_start, gap_event_jump_end
+   use wa_gapcritical, only: gap_cycle_critical
    implicit none
    private
 
@@ -46,7 +46,10 @@ contains
    !> "gradual", "jump-in", ... for mechanism m of the approach (which = 3) or the
    !> retraction (which = 4).
    pure function gap_mechanism_name(which, m) result(text)
-      integer, intent(in) :: which, m
+      !> The stage, 3 (the approach) or 4 (the retraction), as the map's `which`
+      integer, intent(in) :: which
+      !> The mechanism code (0-3, a sum of gap_flag_* flags)
+      integer, intent(in) :: m
       character(len=:), allocatable :: text
       character(len=*), parameter :: app(0:3) = [character(len=20) :: "gradual", &
          "jump-in", "gradual+inner jumps", "jump-in+inner jumps"]
@@ -63,10 +66,17 @@ contains
 
    !> Trace the branch at (alpha, mu) and classify its gap-controlled cycle.
    subroutine gap_mechanisms(model, params, mech_approach, mech_retraction, status, errmsg)
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
       integer, intent(in) :: model
+      !> Validated dimensionless parameters alpha, mu (new_params)
       type(params_type), intent(in) :: params
-      integer, intent(out) :: mech_approach, mech_retraction
+      !> The approach's mechanism (0-3, see the module header; -1 when the cycle fails)
+      integer, intent(out) :: mech_approach
+      !> The retraction's mechanism (0-3; -1 when the cycle fails)
+      integer, intent(out) :: mech_retraction
+      !> wa_ok; else the status of the failing trace or cycle
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
       mech_approach = -1
@@ -180,11 +190,24 @@ contains
    !> cycle fails at a trial mu, 14 other points of the bracket are tried in turn.
    subroutine gap_mechanism_change(model, alpha, which, mu_lo, mu_hi, mu_change, status, &
          errmsg, bracket)
-      integer, intent(in) :: model, which
-      real(wp), intent(in) :: alpha, mu_lo, mu_hi
+      !> The model: model_westergaard, model_jkr, model_dw or model_md
+      integer, intent(in) :: model
+      !> The mechanism bisected, 3 (the approach's) or 4 (the retraction's)
+      integer, intent(in) :: which
+      !> The adhesion parameter alpha (valid range: new_params)
+      real(wp), intent(in) :: alpha
+      !> The lower end of the bracket in mu
+      real(wp), intent(in) :: mu_lo
+      !> The upper end of the bracket in mu (the mechanisms at the two ends differ)
+      real(wp), intent(in) :: mu_hi
+      !> The mu where the mechanism changes (NaN on failure)
       real(wp), intent(out) :: mu_change
+      !> wa_ok; wa_invalid_argument for bad input; wa_no_solution when the mechanisms at the
+      !> ends agree; else the status of the failing bisection
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> The final bracket in mu that holds the change (NaN where none is known)
       real(wp), intent(out), optional :: bracket(2)
       real(wp), parameter :: tries(15) = [0.5_wp, 0.25_wp, 0.75_wp, 0.125_wp, 0.875_wp, &
          0.0625_wp, 0.9375_wp, 0.375_wp, 0.625_wp, 0.3125_wp, 0.6875_wp, 0.1875_wp, &

@@ -17,7 +17,7 @@ module wa_loadpath
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
    use wa_text, only: real_text, int_text
    use wa_validate, only: optval
-   use wa_mechanism, only: mechanism_bisection, bisection_start, bisection_next, &
+   use wa_mechanism, only: a_point_pull_off, mechanism_bisection, bisection_start, bisection_next, &
       bisection_tell, bisection_result
    implicit none
    private
@@ -31,17 +31,6 @@ module wa_loadpath
    integer, parameter :: max_jumps = 15
    !> Where a gradual pull-off is evaluated: the limit a* -> 0 to ~1e-12 in P*.
    real(wp), parameter :: a_limit = 1.0e-12_wp
-   !> A minimum of P* below this a* from which contact is lost (a fold of case 1 or a
-   !> corner at c* = 1/2) counts as a gradual pull-off: the contact has shrunk to a point
-   !> (doc/theory.md, "Pull-off at a point"). Near a* -> 0, P* - P*(0) behaves like
-   !> a*^2 (k1 ln a* + k2), so a case-1 minimum sits at an a* that shrinks exponentially
-   !> with mu, its load within ~a*^2 of P*(a* -> 0). Whether it lies above the branch's
-   !> first point a_start = 1e-6, where P* is flat to 1e-12, is not decidable in double
-   !> precision (the mechanism flickered over 1e-5 relative in mu); at 1e-3 the fold is
-   !> placed to ~1e-8 relative, the boundary to ~1e-10 in mu. Likewise a corner minimum
-   !> born at a_start (a case-1 piece appearing there) made a sliver of "jump case 2"
-   !> 1e-5 wide in mu (DW, alpha 0.31). P_pf stays the load of that minimum.
-   real(wp), parameter, public :: a_point_pull_off = 1.0e-3_wp
    !> The mechanisms: gradual (no jump), a jump leaving a case-1 or a case-2 state, or
    !> (full contact only) a snap from separation at zero load.
    integer, parameter :: mechanism_gradual = 0, mechanism_jump_case1 = 1, &

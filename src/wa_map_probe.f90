@@ -12,7 +12,8 @@ module wa_map_probe
    use wa_state, only: zone_inside
    use wa_branch, only: branch_type, trace_branch, trace_options, event_pull_off
    use wa_curve, only: curve_residual, curve_y_max
-   use wa_loadpath, only: path_type, path_from_branch, mechanism_snap, a_point_pull_off
+   use wa_loadpath, only: path_type, path_from_branch, mechanism_snap
+   use wa_mechanism, only: a_point_pull_off
    use wa_gapmech, only: gap_mechanisms_from_branch
    use wa_map_types, only: map_control_load, map_control_gap
    implicit none

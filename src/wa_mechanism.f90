@@ -26,6 +26,20 @@ module wa_mechanism
 
    public :: mechanism_bisection, bisection_start, bisection_next, bisection_tell, &
       bisection_result
+   public :: a_point_pull_off
+
+   !> A minimum of P* below this a* from which contact is lost (a fold of case 1 or a
+   !> corner at c* = 1/2) counts as a gradual pull-off (load control; gap control likewise for the maximum of
+   !> gbar* the retraction jumps from): the contact has shrunk to a point
+   !> (doc/theory.md, "Pull-off at a point"). Near a* -> 0, P* - P*(0) behaves like
+   !> a*^2 (k1 ln a* + k2), so a case-1 minimum sits at an a* that shrinks exponentially
+   !> with mu, its load within ~a*^2 of P*(a* -> 0). Whether it lies above the branch's
+   !> first point a_start = 1e-6, where P* is flat to 1e-12, is not decidable in double
+   !> precision (the mechanism flickered over 1e-5 relative in mu); at 1e-3 the fold is
+   !> placed to ~1e-8 relative, the boundary to ~1e-10 in mu. Likewise a corner minimum
+   !> born at a_start (a case-1 piece appearing there) made a sliver of "jump case 2"
+   !> 1e-5 wide in mu (DW, alpha 0.31). P_pf stays the load of that minimum.
+   real(wp), parameter :: a_point_pull_off = 1.0e-3_wp
 
    !> What the bisection asks for next
    integer, parameter :: want_lo = 1, want_hi = 2, want_trial = 3, finished = 4

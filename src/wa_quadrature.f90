@@ -5,7 +5,10 @@
 !> Gauss rules (MD's Psi_c): what the work-precision study (doc/accuracy-performance.md)
 !> measures the defaults against. None is used unless an option asks for it. Also the
 !> library's one literal 16-point Gauss-Legendre rule on [0, 1] (gl16_x, gl16_w), which
-!> the mean gap and the MD gap of src/wa_separation.f90 sum their panels with.
+!> the mean gap and the MD gap of src/wa_separation.f90 sum their panels with, and the
+!> n-point Gauss-Legendre rules on [-1, 1] with their polynomial interpolants (gl_rule,
+!> gl_interpolate, gl_value_slope, gl_invert) that the panels along a chain
+!> (src/wa_chain_cover.f90) hold P* and gbar* in.
 !>
 !> DW, W by (E1) of src/wa_elliptic.f90:
 !>   wa_quad_istar_carlson  the Carlson form with GSL's R_F, R_D, R_J (istar_carlson)
@@ -43,6 +46,7 @@ module wa_quadrature
    public :: psi_gauss_rules, k_gauss, psi_k_gsl, sort2
    public :: quad_psi_qaws, quad_psi_qag, quad_psi_qags
    public :: gl16_x, gl16_w
+   public :: gl_rule_type, gl_rule, gl_interpolate, gl_value_slope, gl_invert
 
    !> Gauss-Legendre, 16 points on [0, 1] (the panels of src/wa_separation.f90). Literal
    !> constants, not gauss_legendre01(16): nodes computed in double at run time would not
@@ -65,6 +69,16 @@ module wa_quadrature
       0.08457825969750126909095_wp, 0.07479799440828836604818_wp, &
       0.06231448562776693602624_wp, 0.04757925584124639240497_wp, &
       0.03112676196932394643142_wp, 0.01357622970587704742589_wp]
+
+   !> Gauss-Legendre nodes and weights on [-1, 1], the barycentric weights of the nodes
+   !> and the differentiation matrix of the interpolating polynomial (d(j, l): weight of
+   !> value l in the derivative at node j).
+   type :: gl_rule_type
+      integer :: n = 0
+      real(wp), allocatable :: x(:), w(:), bw(:), d(:, :)
+      !> Legendre coefficients of the interpolant from the values at the nodes: c = leg f
+      real(wp), allocatable :: leg(:, :)
+   end type gl_rule_type
 
    !> Methods of wa_quad_psi_k
    integer, parameter :: quad_psi_qaws = 1, quad_psi_qag = 2, quad_psi_qags = 3
@@ -376,5 +390,138 @@ contains
          x(j + 1) = vx; w(j + 1) = vw
       end do
    end subroutine sort2
+
+   ! ------------------------------- Gauss-Legendre rules with their interpolants
+
+   !> Gauss-Legendre rule with n nodes, its barycentric weights and differentiation matrix.
+   pure subroutine gl_rule(n, rule)
+      integer, intent(in) :: n
+      type(gl_rule_type), intent(out) :: rule
+      integer :: j, l
+      real(wp) :: p0(n), p1(n), p2(n)
+      rule%n = n
+      allocate (rule%x(n), rule%w(n), rule%bw(n), rule%d(n, n), rule%leg(n, n))
+      call gauss_legendre_pm1(rule%x, rule%w)
+      p0 = 1.0_wp; p1 = rule%x                    ! P_k(x_j) by the three-term recurrence
+      rule%leg(1, :) = 0.5_wp*rule%w
+      if (n > 1) rule%leg(2, :) = 1.5_wp*rule%w*p1
+      do l = 2, n - 1
+         p2 = (real(2*l - 1, wp)*rule%x*p1 - real(l - 1, wp)*p0)/real(l, wp)
+         rule%leg(l + 1, :) = 0.5_wp*real(2*l + 1, wp)*rule%w*p2
+         p0 = p1; p1 = p2
+      end do
+      do j = 1, n
+         rule%bw(j) = 1.0_wp
+         do l = 1, n
+            if (l /= j) rule%bw(j) = rule%bw(j)/(rule%x(j) - rule%x(l))
+         end do
+      end do
+      rule%d = 0.0_wp
+      do j = 1, n
+         do l = 1, n
+            if (l == j) cycle
+            rule%d(j, l) = (rule%bw(l)/rule%bw(j))/(rule%x(j) - rule%x(l))
+            rule%d(j, j) = rule%d(j, j) - rule%d(j, l)
+         end do
+      end do
+   end subroutine gl_rule
+
+   !> The interpolating polynomial through (rule%x, f) at z in [-1, 1] (barycentric).
+   pure real(wp) function gl_interpolate(rule, f, z) result(v)
+      type(gl_rule_type), intent(in) :: rule
+      real(wp), intent(in) :: f(:), z
+      real(wp) :: num, den, t
+      integer :: j
+      num = 0.0_wp; den = 0.0_wp
+      do j = 1, rule%n
+         if (z == rule%x(j)) then
+            v = f(j)
+            return
+         end if
+         t = rule%bw(j)/(z - rule%x(j))
+         num = num + t*f(j); den = den + t
+      end do
+      v = num/den
+   end function gl_interpolate
+
+   !> The interpolant of p and dp/dg = (dp/dz)/(dg/dz) at z.
+   pure subroutine gl_value_slope(rule, p, g, z, v, dpdg)
+      type(gl_rule_type), intent(in) :: rule
+      real(wp), intent(in) :: p(:), g(:), z
+      real(wp), intent(out) :: v, dpdg
+      real(wp) :: zz, dp, dg, gz, t, den
+      integer :: j
+      zz = z
+      if (any(zz == rule%x)) zz = zz + 8.0_wp*epsilon(zz)*merge(-1.0_wp, 1.0_wp, zz > 0.0_wp)
+      v = gl_interpolate(rule, p, zz)
+      gz = gl_interpolate(rule, g, zz)
+      dp = 0.0_wp; dg = 0.0_wp; den = 0.0_wp
+      do j = 1, rule%n                               ! Schneider-Werner derivative
+         t = rule%bw(j)/(zz - rule%x(j))
+         den = den + t
+         dp = dp + t*(v - p(j))/(zz - rule%x(j))
+         dg = dg + t*(gz - g(j))/(zz - rule%x(j))
+      end do
+      dpdg = 0.0_wp
+      if (dg /= 0.0_wp) dpdg = dp/dg
+   end subroutine gl_value_slope
+
+   !> z in [-1, 1] where the (monotone) interpolant of g equals target: bisection
+   !> safeguarded Newton-secant (regula falsi with the Illinois rule).
+   pure real(wp) function gl_invert(rule, g, target) result(z)
+      type(gl_rule_type), intent(in) :: rule
+      real(wp), intent(in) :: g(:), target
+      real(wp) :: za, zb, fa, fb, fz
+      integer :: it, side
+      za = -1.0_wp; zb = 1.0_wp
+      fa = gl_interpolate(rule, g, za) - target
+      fb = gl_interpolate(rule, g, zb) - target
+      if (fa == 0.0_wp) then
+         z = za; return
+      else if (fb == 0.0_wp .or. fa*fb > 0.0_wp) then
+         z = merge(za, zb, abs(fa) < abs(fb)); return
+      end if
+      side = 0
+      z = za
+      do it = 1, 200
+         z = (za*fb - zb*fa)/(fb - fa)
+         if (.not. (z > za .and. z < zb)) z = 0.5_wp*(za + zb)
+         fz = gl_interpolate(rule, g, z) - target
+         if (fz == 0.0_wp .or. zb - za <= 4.0_wp*epsilon(1.0_wp)) exit
+         if (fz*fb > 0.0_wp) then
+            zb = z; fb = fz
+            if (side == 1) fa = 0.5_wp*fa
+            side = 1
+         else
+            za = z; fa = fz
+            if (side == -1) fb = 0.5_wp*fb
+            side = -1
+         end if
+         if (abs(zb - za) <= 2.0_wp*epsilon(1.0_wp)*max(1.0_wp, abs(z))) exit
+      end do
+   end function gl_invert
+
+   !> Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n).
+   pure subroutine gauss_legendre_pm1(x, w)
+      real(wp), intent(out) :: x(:), w(:)
+      integer :: n, i, k, it
+      real(wp) :: z, p0, p1, p2, dp
+      n = size(x)
+      do i = 1, n
+         z = cos(pi*(real(i, wp) - 0.25_wp)/(real(n, wp) + 0.5_wp))
+         do it = 1, 100
+            p0 = 1.0_wp; p1 = z
+            do k = 2, n
+               p2 = (real(2*k - 1, wp)*z*p1 - real(k - 1, wp)*p0)/real(k, wp)
+               p0 = p1; p1 = p2
+            end do
+            dp = real(n, wp)*(z*p1 - p0)/(z*z - 1.0_wp)
+            if (abs(p1/dp) < 1.0e-16_wp) exit
+            z = z - p1/dp
+         end do
+         x(i) = z
+         w(i) = 2.0_wp/((1.0_wp - z*z)*dp*dp)
+      end do
+   end subroutine gauss_legendre_pm1
 
 end module wa_quadrature

@@ -202,7 +202,8 @@ module wavyadhesion
    use wa_map, only: adhesion_map
    use wa_gappath, only: gap_path_type, gap_path, gap_law, gap_stage_approach, gap_stage_retraction, &
       gap_event_touch, gap_event_contact_made, gap_event_contact_lost, &
-      gap_event_interaction_lost, load_jump_energies
+      gap_event_interaction_lost
+   use wa_jump_energy, only: load_jump_energies
    use wa_gapcritical, only: gap_critical_type, gap_critical, gap_critical_sweep, &
       gap_critical_values, gap_critical_count, gap_critical_names
    use wa_map_types, only: map_control_load, map_control_gap, map_control_both

@@ -484,7 +484,7 @@ subroutine fa_load_path(capacity, model, alpha, mu, stage, event, a_star, c_star
    use wa_models, only: check_model
    use wa_loadpath, only: path_type, path_from_branch
    use wa_branch, only: branch_type, trace_branch
-   use wa_gappath, only: load_jump_energies
+   use wa_jump_energy, only: load_jump_energies
    implicit none
    !> Length of the event arrays, >= 1
    integer(c_int), intent(in) :: capacity

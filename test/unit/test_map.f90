@@ -48,7 +48,7 @@ contains
    !> 20 alpha over [0.01, 10]: every boundary point on the grid, rebisected by
    !> mechanism_change from a bracket of +-1e-7 around it, agrees to 1e-8 relative, on
    !> every boundary (201/210 too: the pull-off mechanism no longer flickers there, see
-   !> a_point_pull_off in wa_loadpath).
+   !> a_point_pull_off in wa_mechanism).
    subroutine test_dw_points(error)
       type(error_type), allocatable, intent(out) :: error
       call check_points(error, model_dw, 20)
