@@ -27,7 +27,12 @@ contains
    !> The LJ 3-9 law of (alpha, mu) with the work of adhesion and range of the cohesive
    !> models: dgamma = pi alpha^2/2, eps = 2 Dcod = (4 alpha^4)^(1/3)/mu (mu > 0).
    pure function lj_law(alpha, mu) result(law)
-      real(wp), intent(in) :: alpha, mu
+      !> Johnson's parameter alpha > 0 (params_type%alpha); not checked here (new_params
+      !> checks it)
+      real(wp), intent(in) :: alpha
+      !> Transition parameter mu > 0 (params_type%mu); not checked here: mu = 0 has no LJ
+      !> law (its range eps would be infinite)
+      real(wp), intent(in) :: mu
       type(bem_law_type) :: law
       law%kind = law_lj39
       law%dgamma = 0.5_wp*pi*alpha**2

@@ -74,6 +74,8 @@ contains
    !> c9 = 15!!/16!! = 6435/32768 (doc/theory.md, "Rigid limit"); dgamma = pi alpha^2/2
    !> and eps = (4 alpha^4)^(1/3)/mu in units of p* Delta and Delta.
    pure function lj_rigid_pull_off(params) result(p_pf)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0 (mu = 0 has no
+      !> LJ law); the result P_pf* is in units of p*
       type(params_type), intent(in) :: params
       real(wp) :: p_pf, t
       type(bem_law_type) :: law
@@ -86,9 +88,17 @@ contains
    !> Gap h/Delta and traction sigma/p* (tension positive) of state z over the whole
    !> period, at x = j/N, j = 0..N-1.
    pure subroutine lj_profile(problem, z, x, gap, traction)
+      !> The problem the state was traced for (N = its grid points per period)
       type(lj_problem_type), intent(in) :: problem
+      !> A state of that problem, e.g. a column of lj_branch_type%z: the gaps over Delta at
+      !> the n_unknowns unknown nodes, then P*; only the gaps are read
       real(wp), intent(in) :: z(:)
-      real(wp), intent(out) :: x(:), gap(:), traction(:)
+      !> Receives the node positions x* = j/N, j = 0..N-1 (size N)
+      real(wp), intent(out) :: x(:)
+      !> Receives the gap h/Delta at x* over the whole period (an even state unfolded; size N)
+      real(wp), intent(out) :: gap(:)
+      !> Receives the traction sigma(h)/p* of the law at x* (tension positive; size N)
+      real(wp), intent(out) :: traction(:)
       real(wp), allocatable :: slope(:)
       integer :: j, np
       np = problem%grid%n_period
@@ -102,12 +112,25 @@ contains
    !> and at half that grid, whose difference is the error estimate (skipped with
    !> estimate = .false.).
    recursive subroutine lj_cycle(params, cycle, status, errmsg, n, profile, estimate)
+      !> Dimensionless parameters alpha, mu (new_params; checked again), mu > 0
       type(params_type), intent(in) :: params
+      !> Both paths, P_fc*, P_pf*, the snap load (over p*), W* (over p* Delta), W*/(pi
+      !> alpha^2/2), N and the error estimates; on failure what was found before it (a
+      !> failing coarse cycle leaves the cycle at N with the errors 0)
       type(lj_cycle_type), intent(out) :: cycle
+      !> wa_ok, else the status of the failing step: lj_problem (wa_invalid_argument,
+      !> wa_capacity_too_small), lj_trace (wa_not_converged, wa_capacity_too_small) or
+      !> lj_paths (wa_no_solution, wa_not_converged), at N or at N/2
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> Grid points per period N, as in lj_problem (even, >= 8; 0 or absent: automatic);
+      !> with the estimate N/2 must be valid too (N a multiple of 4, >= 16)
       integer, intent(in), optional :: n
+      !> The profile as samples of one period over Delta, as in lj_problem (absent: the
+      !> sinusoid 1 - cos 2 pi x*); the coarse cycle uses the same samples
       real(wp), intent(in), optional :: profile(:)
+      !> If false, skip the cycle at N/2 (the error fields stay 0); default true
       logical, intent(in), optional :: estimate
       type(lj_problem_type) :: problem
       type(lj_branch_type) :: branch
@@ -134,10 +157,22 @@ contains
 
    !> Load- and gap-controlled paths on a traced branch (landing states are inserted).
    subroutine lj_paths(problem, branch, cycle, status, errmsg)
+      !> The problem the branch was traced for
       type(lj_problem_type), intent(in) :: problem
+      !> A branch traced by lj_trace (status wa_ok); the landing states of the jumps are
+      !> inserted into it (also those found before a failure)
       type(lj_branch_type), intent(inout) :: branch
+      !> A default-initialised cycle; receives N, the load path with P_fc*, P_pf*, the snap
+      !> load (over p*), and the gap path with W* (over p* Delta); W*/(pi alpha^2/2) and
+      !> the error fields are left alone (lj_cycle sets them). On failure the path of the
+      !> failing control is not stored (P_fc* may hold huge(1.0_wp) where loading fails)
       type(lj_cycle_type), intent(inout) :: cycle
+      !> wa_ok; wa_no_solution where a path cannot be completed (no load-stable state at
+      !> P* = 0, loading stops short of full contact, no stable landing state after a jump,
+      !> a walk ends away from an extremum); wa_not_converged where an unloading landing
+      !> state does not converge or loading or unloading takes more than 30 jumps
       integer, intent(out) :: status
+      !> Receives the reason on failure (what failed)
       character(len=*), intent(inout), optional :: errmsg
       cycle%n_period = problem%grid%n_period
       call load_control(problem, branch, cycle, status, errmsg)

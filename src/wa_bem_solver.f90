@@ -91,6 +91,8 @@ contains
    !> Length over L of the interaction zone, alpha^2/(2 Sigma0^2) (the cohesive zone of
    !> a crack in the JKR regime, doc/theory.md "Smooth adhesion").
    pure function lj_zone_length(params) result(ell)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0 (at mu = 0,
+      !> Sigma0 = 0 and the zone is unbounded)
       type(params_type), intent(in) :: params
       real(wp) :: ell
       ell = params%alpha**2/(2.0_wp*params%sigma0**2)
@@ -99,6 +101,8 @@ contains
    !> The automatic grid: the smallest power of two >= 128 that puts points_per_zone
    !> points on the interaction zone; 0 where that exceeds lj_max_auto_n.
    pure function lj_auto_n(params) result(n)
+      !> Validated dimensionless parameters alpha, mu (new_params), mu > 0 (lj_problem
+      !> refuses mu = 0)
       type(params_type), intent(in) :: params
       integer :: n
       real(wp) :: need
@@ -115,11 +119,23 @@ contains
    !> sinusoid 1 - cos 2 pi x). wa_invalid_argument for bad parameters (mu = 0 has no
    !> LJ law), wa_capacity_too_small where the grid exceeds the caps.
    subroutine lj_problem(params, problem, status, errmsg, n, profile)
+      !> Dimensionless parameters alpha, mu (new_params; checked again here), mu > 0
       type(params_type), intent(in) :: params
+      !> The discretised problem (law, grid of N points per period, stiffness), for lj_trace;
+      !> incomplete on failure (not to be used)
       type(lj_problem_type), intent(out) :: problem
+      !> wa_ok; wa_invalid_argument for bad params, mu = 0, a bad n or a profile of fewer
+      !> than 4 samples; wa_capacity_too_small where the automatic grid would exceed
+      !> lj_max_auto_n = 2048 or the grid gives more than lj_max_unknowns = 8193 unknowns
       integer, intent(out) :: status
+      !> Receives the reason on failure (the bad argument and its valid range, or the cap)
       character(len=*), intent(inout), optional :: errmsg
+      !> Grid points per period N: even and >= 8, at most 16384 on an even profile (N/2 + 1
+      !> unknowns) and 8192 otherwise; 0 or absent: the automatic grid lj_auto_n(params)
       integer, intent(in), optional :: n
+      !> The profile as samples of one period at x* = j/M, j = 0..M-1 (M >= 4), heights in
+      !> units of Delta, resampled by its trigonometric interpolant; an even profile
+      !> (y(j) = y(M-j)) is solved on the half period; absent: the sinusoid 1 - cos 2 pi x*
       real(wp), intent(in), optional :: profile(:)
       integer :: np
       character(len=24) :: text

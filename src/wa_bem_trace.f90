@@ -81,10 +81,20 @@ contains
 
    !> Trace the equilibrium curve of problem from far apart to full contact.
    subroutine lj_trace(problem, branch, status, errmsg, options)
+      !> The discretised problem made by lj_problem (status wa_ok)
       type(lj_problem_type), intent(in) :: problem
+      !> The traced curve: P*, gbar* (over Delta), a*, b*, h_min, h_max, tangents, inertia,
+      !> stability, events and states z at every point; on failure the points traced so far
+      !> (n = 0 where the state far apart did not converge)
       type(lj_branch_type), intent(out) :: branch
+      !> wa_ok; wa_not_converged where the state far apart does not converge or the step
+      !> falls below 1e-12 (a singular point of the curve); wa_capacity_too_small where
+      !> the branch reaches options%max_points points before the trace's end
       integer, intent(out) :: status
+      !> Receives the reason on failure (what failed)
       character(len=*), intent(inout), optional :: errmsg
+      !> Continuation controls (lj_trace_options: largest turn and changes of P*, gbar* per
+      !> step, start and end of the trace, max_points), used as given; absent: the defaults
       type(lj_trace_options), intent(in), optional :: options
       type(jacobian_type) :: pre
       call trace_with(problem, pre, branch, status, errmsg, options)

@@ -438,18 +438,13 @@ def public_procedures():
     return procs
 
 
-# The smooth-adhesion (LJ) core's exported routines: their arguments are still to be
-# documented one by one (their modules' headers describe them).
-UNDOCUMENTED_TODO = {"wa_bem_law.f90", "wa_bem_solver.f90", "wa_bem_trace.f90", "wa_bem_path.f90"}
-
-
 def test_public_arguments_documented():
     """Every dummy argument of every routine `use wavyadhesion` exports has a `!>` doc
     comment (FORD shows it on the routine's page)."""
     procs = public_procedures()
     assert len(procs) >= 50, sorted(procs)
     missing = [f"{file}: {proc}({arg})" for proc, (file, args) in sorted(procs.items())
-               for arg, doc in args if not doc and file not in UNDOCUMENTED_TODO]
+               for arg, doc in args if not doc]
     assert not missing, missing
     n_args = sum(len(args) for _, args in procs.values())
     assert n_args > 250, n_args
