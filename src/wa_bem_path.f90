@@ -37,6 +37,8 @@ module wa_bem_path
    integer, parameter :: lj_path_jump_start = 3, lj_path_jump_end = 4, &
       lj_path_full_contact_reached = 5, lj_path_full_contact_left = 6, lj_path_pull_off = 7
    integer, parameter :: max_events = 64
+   !> Bound on the jumps of one stage of a path (each jump records two events)
+   integer, parameter :: max_path_jumps = 30
    !> quantity walked: the load or the mean gap
    integer, parameter :: by_load = 1, by_gap = 2
 
@@ -511,9 +513,15 @@ contains
          else
             i = branch%n; dir = -1; sense = 1
          end if
-         do jumps = 1, 30
+         do jumps = 1, max_path_jumps + 1
             call walk(problem, branch, by_gap, i, dir, path, stage, integral)
             if (i == 1 .or. i == branch%n) exit
+            if (jumps > max_path_jumps) then      ! never a W* of a path cut short
+               call fail(wa_not_converged, "lj gap path: too many jumps on the "// &
+                  trim(merge("approach  ", "retraction", stage == lj_stage_approach)), &
+                  errmsg, status)
+               return
+            end if
             if (fold_of(branch, by_gap, i) /= sense) then
                call fail(wa_no_solution, "lj gap path: the walk ended away from an "// &
                   "extremum of gbar*", errmsg, status)
