@@ -272,6 +272,7 @@ contains
       real(wp) :: t, c_guess
       integer :: zone
       logical :: done
+      character(len=512) :: first_msg
       if (param_kind(ch, i) /= 0 .and. present(hint)) hint%n = 0
       if (param_kind(ch, i) == 1) then
          call md_no_contact_state(params, min(x, 0.5_wp - epsilon(x)), s, status, errmsg)
@@ -294,11 +295,15 @@ contains
       if (zone == zone_no_contact .or. zone == zone_full_contact) zone = -1
       if (ch%event(i) == event_switch .and. ch%zone(i + 1) /= zone_full_contact) &
          zone = ch%zone(i + 1)
-      call solve_at_a(model, params, x, c_guess, zone, s, status, errmsg)
-      ! an interval that changes zone case without a switch point between (a fold at
-      ! the switch): the equilibrium nearest the guess in any case
-      if (status /= wa_ok .and. zone >= 0 .and. ch%zone(i) /= ch%zone(i + 1)) &
+      call solve_at_a(model, params, x, c_guess, zone, s, status, first_msg)
+      if (status /= wa_ok .and. zone >= 0 .and. ch%zone(i) /= ch%zone(i + 1)) then
+         ! an interval that changes zone case without a switch point between (a fold at
+         ! the switch): the equilibrium nearest the guess in any case (the first
+         ! attempt's message is dropped: a retry that succeeds leaves no stale message)
          call solve_at_a(model, params, x, c_guess, -1, s, status, errmsg)
+      else if (status /= wa_ok .and. present(errmsg)) then
+         errmsg = first_msg
+      end if
    end subroutine state_at_param
 
    !> The state at a* = x on chain interval i (t: its position in the interval) without

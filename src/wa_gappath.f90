@@ -67,9 +67,13 @@ contains
       !> Receives the reason on failure (the bad argument and its valid range, or what failed)
       character(len=*), intent(inout), optional :: errmsg
       type(branch_type) :: branch
+      character(len=:), allocatable :: caller_msg
+      if (present(errmsg)) caller_msg = errmsg
       call trace_branch(model, params, branch, status, errmsg)
       if (status /= wa_ok) return
       call gap_path_from_branch(model, params, branch, path, status, errmsg)
+      ! the message is the caller's on success, never that of a tolerated inner failure
+      if (status == wa_ok .and. present(errmsg)) errmsg = caller_msg
    end subroutine gap_path
 
    !> Approach from far apart to full contact and retraction, on a traced branch.
@@ -138,7 +142,9 @@ contains
       type(cover_type) :: cov
       integer :: n_walked, n_approach, k
       logical :: found
+      character(len=:), allocatable :: caller_msg
 
+      if (present(errmsg)) caller_msg = errmsg
       p_approach = 0.0_wp; p_retract = 0.0_wp; dpdg_approach = 0.0_wp; dpdg_retract = 0.0_wp
       if (present(w_star)) w_star = 0.0_wp
       if (present(w_fraction)) w_fraction = 0.0_wp
@@ -181,6 +187,8 @@ contains
          call law_on(cov, params, ch, walked(n_approach + 1:n_walked), gbar(k), p_retract(k), &
             dpdg_retract(k), found)
       end do
+      ! the message is the caller's on success, never that of a tolerated inner failure
+      if (present(errmsg)) errmsg = caller_msg
    end subroutine gap_law
 
    !> Approach (decreasing gbar* from far apart) or retraction (increasing from full

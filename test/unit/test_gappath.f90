@@ -34,7 +34,8 @@ contains
          new_unittest("load_jump_energies", test_load_jump_energies), &
          new_unittest("md_gbar_pair_before_switch", test_pair_before_switch), &
          new_unittest("jump_ends_share_gbar", test_jump_ends_share), &
-         new_unittest("jump_out_near_tracer_floor", test_jump_out_floor)]
+         new_unittest("jump_out_near_tracer_floor", test_jump_out_floor), &
+         new_unittest("message_untouched_on_ok", test_message_untouched_on_ok)]
    end subroutine collect_gappath
 
    subroutine path_of(model, alpha, mu, path, error)
@@ -470,5 +471,34 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_jump_out_floor
+
+   !> An inner failure that the gap cycle tolerates (a point solve retried in any zone case)
+   !> leaves no message behind: on success errmsg is what the caller passed (DW, alpha
+   !> 1.4489, mu 2.1755e7 left "gap_path: no equilibrium near the branch ..." in 0.2).
+   subroutine test_message_untouched_on_ok(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(gap_path_type) :: path
+      real(wp) :: g(3), pa(3), pr(3), da(3), dr(3)
+      integer :: status
+      character(len=256) :: msg
+      call new_params(1.4489361929536397_wp, 21754883.931522951_wp, params, status)
+      g = [0.0_wp, 0.5_wp, 1.0_wp]
+      msg = "caller's text"
+      call gap_law(model_dw, params, g, pa, pr, da, dr, status, msg)
+      call check(error, status == wa_ok .and. msg == "caller's text", &
+         "gap_law: status "//trim(adjustl(int_str(status)))//", message '"//trim(msg)//"'")
+      if (allocated(error)) return
+      msg = "caller's text"
+      call gap_path(model_dw, params, path, status, msg)
+      call check(error, status == wa_ok .and. msg == "caller's text", &
+         "gap_path: message '"//trim(msg)//"'")
+   contains
+      function int_str(i) result(t)
+         integer, intent(in) :: i
+         character(len=12) :: t
+         write (t, '(i0)') i
+      end function int_str
+   end subroutine test_message_untouched_on_ok
 
 end module test_gappath
