@@ -1155,3 +1155,96 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    end if
    status = int(stat, c_int)
 end subroutine fa_lj_cycle
+
+!> Gap and traction over the period of one state of the smooth (Lennard-Jones) model: the
+!> traced state with a* nearest a_target (among the load-stable states when there are
+!> any; the CLI's `profile --model lj`), at the N grid nodes x* = j/N - 1/2, j = 0..N-1.
+!> Status 4 (capacity too small) when N > capacity (n_period says how many are needed).
+subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_target, x, &
+      traction, gap, n_period, state, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small, wa_invalid_argument
+   use wa_params, only: params_type, new_params
+   use wa_bem_solver, only: lj_problem_type, lj_problem
+   use wa_bem_trace, only: lj_branch_type, lj_trace
+   use wa_bem_path, only: lj_profile
+   implicit none
+   !> Length of the output arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, > 0
+   real(c_double), intent(in) :: mu
+   !> Grid points per period (0: automatic)
+   integer(c_int), intent(in) :: n
+   !> 1: the profile is the samples in profile; 0: the sinusoid (profile ignored)
+   integer(c_int), intent(in) :: use_profile
+   !> Number of profile samples
+   integer(c_int), intent(in) :: m
+   !> Heights over Delta at x* = j/m, j = 0..m-1
+   real(c_double), intent(in) :: profile(m)
+   !> The contact half-width a* of the state wanted, in [0, 1/2]
+   real(c_double), intent(in) :: a_target
+   !> x*, traction p/p* (compressive positive) and gap h/Delta at the grid nodes
+   real(c_double), intent(out) :: x(capacity), traction(capacity), gap(capacity)
+   !> Grid points per period (the number of points)
+   integer(c_int), intent(out) :: n_period
+   !> The state drawn: a*, b*, P*, gbar*
+   real(c_double), intent(out) :: state(4)
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(lj_problem_type) :: problem
+   type(lj_branch_type) :: b
+   real(c_double), allocatable :: xs(:), hs(:), ss(:)
+   real(c_double) :: miss
+   integer :: i, k, j, np, stat
+   logical :: any_stable
+
+   message = ""
+   x = 0; traction = 0; gap = 0; n_period = 0; state = 0
+   stat = wa_ok
+   if (.not. (a_target >= 0.0_c_double .and. a_target <= 0.5_c_double)) then
+      stat = wa_invalid_argument
+      message = "a_star is outside its valid range [0, 1/2]"
+   end if
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok .and. use_profile /= 0) then
+      call lj_problem(params, problem, stat, message, int(n), profile)
+   else if (stat == wa_ok) then
+      call lj_problem(params, problem, stat, message, int(n))
+   end if
+   if (stat == wa_ok) call lj_trace(problem, b, stat, message)
+   if (stat == wa_ok) then
+      any_stable = any(b%stable_load(1:b%n))
+      k = 1
+      miss = huge(1.0_c_double)
+      do i = 1, b%n
+         if (any_stable .and. .not. b%stable_load(i)) cycle
+         if (abs(b%a_star(i) - a_target) < miss) then
+            miss = abs(b%a_star(i) - a_target)
+            k = i
+         end if
+      end do
+      np = b%n_period
+      n_period = int(np, c_int)
+      state = [b%a_star(k), b%b_star(k), b%p_star(k), b%gbar(k)]
+      if (np > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_lj_profile: capacity too small"
+      else
+         allocate (xs(np), hs(np), ss(np))
+         call lj_profile(problem, b%z(:, k), xs, hs, ss)
+         do i = 1, np                      ! from x* = -1/2 (node N/2) on
+            j = modulo(i - 1 + np/2, np) + 1
+            x(i) = xs(j) - merge(1.0_c_double, 0.0_c_double, xs(j) >= 0.5_c_double)
+            traction(i) = -ss(j)
+            gap(i) = hs(j)
+         end do
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_lj_profile

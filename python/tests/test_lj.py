@@ -115,3 +115,20 @@ def test_bad_lj_arguments(kwargs, exc, needle):
     for func in (wa.trace_branch, wa.load_path, wa.gap_path, wa.critical_forces):
         with pytest.raises(exc, match=needle.replace("(", r"\(").replace(")", r"\)")):
             func(model, 0.3, 3.0, **kwargs)
+
+
+def test_profile_of_a_traced_state():
+    """The state with a* nearest 0.2 at n = 64: its mean traction is P* and its mean gap
+    gbar* (independent of how the state was chosen); the CLI draws the same state."""
+    p = wa.profile("lj", 0.3, 1.0, 0.2, n=64)
+    assert p.N == 64 and p.x.size == 64 and p.x[0] == -0.5
+    assert abs(p.a_star - 0.2) < 0.02
+    assert np.mean(p.traction) == pytest.approx(p.P_star, abs=1e-12)
+    assert np.mean(p.gap) == pytest.approx(p.gbar, abs=1e-12)
+    b = wa.trace_branch("lj", 0.3, 1.0, n=64)
+    k = np.flatnonzero(b.P_star == p.P_star)
+    assert k.size == 1 and b.stable[k[0]] and b.b_star[k[0]] == p.b_star
+    with pytest.raises(wa.InvalidArgumentError, match="c_star and x do not apply"):
+        wa.profile("lj", 0.3, 1.0, 0.2, c_star=0.3, n=64)
+    with pytest.raises(wa.InvalidArgumentError, match="only for model='lj'"):
+        wa.profile("dw", 0.3, 1.0, 0.2, n=64)

@@ -9,7 +9,7 @@ a* = a/L and c* = c/L lie in [0, 1/2]; parameters alpha > 0 (Johnson's) and mu >
 (transition parameter). Models are named "westergaard", "jkr", "dw", "md"; "lj" (the
 smooth Lennard-Jones model: same work of adhesion, range eps = 2 Dcod Delta, so mu keeps
 its meaning and its peak tension is 16/(9 sqrt 3) sigma0) in trace_branch, load_path,
-gap_path and critical_forces, with ``n=`` (grid) and ``profile=`` (samples of one period);
+gap_path, critical_forces and profile, with ``n=`` (grid) and ``profile=`` (samples of one period);
 its results carry discretisation-error estimates (``P_fc_err``, ...).
 
 Every result converts itself to SI units: ``result.to_si(params)`` with a

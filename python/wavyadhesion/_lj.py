@@ -28,7 +28,7 @@ from ._results import ResultMixin, TupleCompat
 
 __all__ = ["LJ_EVENTS", "LJ_PATH_EVENTS", "LJBranch", "LJBranchEvent", "LJLoadPath",
            "LJGapPath", "LJCriticalForces", "is_lj", "lj_trace_branch", "lj_load_path",
-           "lj_gap_path", "lj_critical_forces", "lj_inputs", "reject_lj_inputs"]
+           "lj_gap_path", "lj_critical_forces", "lj_profile", "lj_inputs", "reject_lj_inputs"]
 
 #: Event codes of the points of an LJ branch.
 LJ_EVENTS = {0: "none", 1: "fold", 14: "gap_fold", 5: "full_contact", 15: "contact",
@@ -369,3 +369,17 @@ def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise",
                             col["P_snap"], col["P_snap_err"], col["W_star"],
                             col["W_star_err"], shaped(grid, shape), shaped(stat, shape),
                             messages, shaped(a_f.copy(), shape), shaped(m_f.copy(), shape))
+
+
+def lj_profile(alpha, mu, a_star, n=None, profile=None):
+    """(x, traction, gap, N, (a*, b*, P*, gbar*)) of the traced LJ state with a* nearest
+    `a_star` (among the load-stable ones when there are any), at the N grid nodes from
+    x* = -1/2 (see :func:`profile`)."""
+    alpha = real_scalar(alpha, "alpha")
+    mu = real_scalar(mu, "mu")
+    a_star = real_scalar(a_star, "a_star")
+    n, use, samples = lj_inputs(n, profile)
+    out = grown(_f.fa_lj_profile, max(n, 2048), 3, alpha, mu, n, use, samples, a_star)
+    x, t, h, n_period, state, _, _ = out
+    k = int(n_period)
+    return x[:k].copy(), t[:k].copy(), h[:k].copy(), k, [float(v) for v in state]
