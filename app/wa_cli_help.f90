@@ -112,8 +112,8 @@ contains
    end function help_global
 
    pure function help_branch() result(text)
-      character(len=100) :: text(24)
-      character(len=100), parameter :: lines(24) = [character(len=100) :: &
+      character(len=100) :: text(25)
+      character(len=100), parameter :: lines(25) = [character(len=100) :: &
          "Usage: wavyadhesion branch [--model M] [--alpha A] [--mu U]", &
          "", &
          "The equilibrium curve by pseudo-arclength continuation from a* -> 0 to a* = 1/2,", &
@@ -136,7 +136,8 @@ contains
          "  wavyadhesion branch --model dw --alpha 0.3 --mu 5", &
          "  wavyadhesion branch --model md --alpha 0.6 --mu 1 --format csv", &
          "--model lj: columns a_star b_star P_star stable stable_gap event extremum gbar", &
-         "  h_min h_max (b*: half the measure of {h <= 3^(1/6) eps}, the peak tension).", &
+         "  h_min h_max (b*: half the measure of {h <= 3^(1/6) eps}, the peak tension);", &
+         "  the header gives P_fc, P_pf and W* on the curve with their error estimates.", &
          "  wavyadhesion branch --model lj --alpha 0.3 --mu 3 --n 256"]
       text = lines
    end function help_branch

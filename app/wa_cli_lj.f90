@@ -9,7 +9,7 @@ module wa_cli_lj
    use wa_kinds, only: wp
    use wa_text, only: int_text
    use wavyadhesion, only: params_type, new_params, lj_problem_type, lj_problem, lj_branch_type, &
-      lj_trace, lj_cycle_type, lj_cycle, lj_path_type, lj_profile, status_message, wa_ok, &
+      lj_trace, lj_cycle_type, lj_cycle, lj_paths, lj_path_type, lj_profile, status_message, wa_ok, &
       wa_invalid_argument
    use wa_cli_options, only: cli_options, given, option_message
    use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
@@ -161,15 +161,36 @@ contains
       type(params_type), intent(in) :: params
       type(table_type), intent(inout) :: tab
       type(lj_problem_type) :: problem
-      type(lj_branch_type) :: b
+      type(lj_branch_type) :: b, walked
+      type(lj_cycle_type) :: cycle, coarse
       real(wp), allocatable :: samples(:)
+      real(wp) :: err(3)
       character(len=256) :: msg
       integer :: i, n, status
       call lj_setup(tab, opts, params, problem, n, samples)
       msg = ""
       call lj_trace(problem, b, status, msg)
       call check(tab, status, msg)
+      ! the critical values on this curve (the paths insert their landing states into a
+      ! copy), and their error estimates from the cycle at N/2
+      walked = b
+      call lj_paths(problem, walked, cycle, status, msg)
+      call check(tab, status, msg)
+      if (allocated(samples)) then
+         call lj_cycle(params, coarse, status, msg, b%n_period/2, samples, estimate=.false.)
+      else
+         call lj_cycle(params, coarse, status, msg, b%n_period/2, estimate=.false.)
+      end if
+      err = ieee_value(err, ieee_quiet_nan)          ! NaN: the coarse cycle failed
+      if (status == wa_ok) err = abs([cycle%p_fc - coarse%p_fc, cycle%p_pf - coarse%p_pf, &
+         cycle%w_star - coarse%w_star])
       call add_value(tab, "N", [real(b%n_period, wp)], integers=.true.)
+      call add_value(tab, "P_fc", [cycle%p_fc])
+      call add_value(tab, "P_fc_err", [err(1)])
+      call add_value(tab, "P_pf", [cycle%p_pf])
+      call add_value(tab, "P_pf_err", [err(2)])
+      call add_value(tab, "W_star", [cycle%w_star])
+      call add_value(tab, "W_star_err", [err(3)])
       call write_header(tab, "equilibrium curve of the smooth (Lennard-Jones) model", "lj", &
          "a_star b_star P_star stable stable_gap event extremum gbar h_min h_max", params, &
          [character(len=160) :: lj_notes(opts, b%n_period, samples), &
@@ -179,7 +200,12 @@ contains
          "event: 0 none, 1 fold of P*, 14 fold of gbar*, 5 full contact reached or left,", &
          "       15 contact made or lost, 8 first and last point", &
          "extremum: +1/-1 maximum/minimum of P*, +2/-2 maximum/minimum of gbar*", &
-         "error: the curve at --n N/2 differs by about the discretisation error at N"])
+         "on this curve: P_fc = "//format_real(cycle%p_fc)//"  P_fc_err = "// &
+         format_real(err(1)), &
+         "  P_pf = "//format_real(cycle%p_pf)//"  P_pf_err = "//format_real(err(2)), &
+         "  W* = "//format_real(cycle%w_star)//"  W_star_err = "//format_real(err(3)), &
+         "_err: discretisation-error estimate |value at N - value at N/2| (NaN: the", &
+         "  cycle at N/2 failed); the points of the curve have none of their own"])
       do i = 1, b%n
          call write_row(tab, [b%a_star(i), b%b_star(i), b%p_star(i), &
             merge(1.0_wp, 0.0_wp, b%stable_load(i)), merge(1.0_wp, 0.0_wp, b%stable_gap(i)), &

@@ -1106,3 +1106,16 @@ def test_lj_bad_profile_line_exits_2(cli, tmp_path):
     res = run(cli, "branch", "--model", "lj", "--profile-file", str(f), check=False)
     assert res.returncode == 2
     assert "line 3" in res.stderr
+
+
+def test_lj_branch_header_carries_the_critical_values_with_errors(cli):
+    doc = json.loads(run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n",
+                         "128", "--format", "json").stdout)
+    v = doc["values"]
+    assert v["N"] == 128
+    assert abs(v["P_fc"] - LJ_P_FC_REF) <= v["P_fc_err"] + 1e-10
+    assert abs(v["P_pf"] - LJ_P_PF_REF) <= v["P_pf_err"] + 1e-10
+    # the cycle at N/2 = 4 cannot be computed: the estimates are NaN, the curve is written
+    doc = json.loads(run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n",
+                         "8", "--format", "json").stdout)
+    assert doc["values"]["P_fc_err"] == "NaN" and doc["n_rows"] > 0
