@@ -165,6 +165,7 @@ contains
       type(lj_cycle_type) :: cycle, coarse
       real(wp), allocatable :: samples(:)
       real(wp) :: err(3)
+      character(len=300), allocatable :: notes(:)
       character(len=256) :: msg
       integer :: i, n, status
       call lj_setup(tab, opts, params, problem, n, samples)
@@ -174,16 +175,22 @@ contains
       ! the critical values on this curve (the paths insert their landing states into a
       ! copy), and their error estimates from the cycle at N/2
       walked = b
+      err = ieee_value(err, ieee_quiet_nan)          ! NaN: a path or the coarse cycle failed
       call lj_paths(problem, walked, cycle, status, msg)
-      call check(tab, status, msg)
-      if (allocated(samples)) then
+      if (status /= wa_ok) then                      ! the curve is still written
+         cycle%p_fc = err(1); cycle%p_pf = err(1); cycle%w_star = err(1)
+         msg = "(the paths failed: "//trim(msg)//")"
+      else if (allocated(samples)) then
          call lj_cycle(params, coarse, status, msg, b%n_period/2, samples, estimate=.false.)
       else
          call lj_cycle(params, coarse, status, msg, b%n_period/2, estimate=.false.)
       end if
-      err = ieee_value(err, ieee_quiet_nan)          ! NaN: the coarse cycle failed
-      if (status == wa_ok) err = abs([cycle%p_fc - coarse%p_fc, cycle%p_pf - coarse%p_pf, &
-         cycle%w_star - coarse%w_star])
+      if (status == wa_ok) then
+         err = abs([cycle%p_fc - coarse%p_fc, cycle%p_pf - coarse%p_pf, &
+            cycle%w_star - coarse%w_star])
+      else if (msg(1:1) /= "(") then
+         msg = "(the cycle at N/2 failed: "//trim(msg)//")"
+      end if
       call add_value(tab, "N", [real(b%n_period, wp)], integers=.true.)
       call add_value(tab, "P_fc", [cycle%p_fc])
       call add_value(tab, "P_fc_err", [err(1)])
@@ -191,9 +198,7 @@ contains
       call add_value(tab, "P_pf_err", [err(2)])
       call add_value(tab, "W_star", [cycle%w_star])
       call add_value(tab, "W_star_err", [err(3)])
-      call write_header(tab, "equilibrium curve of the smooth (Lennard-Jones) model", "lj", &
-         "a_star b_star P_star stable stable_gap event extremum gbar h_min h_max", params, &
-         [character(len=160) :: lj_notes(opts, b%n_period, samples), &
+      notes = [character(len=300) :: lj_notes(opts, b%n_period, samples), &
          "a_star: half the measure of {h <= eps} (contact); b_star: half the measure of", &
          "  {h <= 3^(1/6) eps} (the position of the peak tension); gbar, h: over Delta", &
          "stable: 1 = stable under load control; stable_gap: 1 = under gap control", &
@@ -205,7 +210,11 @@ contains
          "  P_pf = "//format_real(cycle%p_pf)//"  P_pf_err = "//format_real(err(2)), &
          "  W* = "//format_real(cycle%w_star)//"  W_star_err = "//format_real(err(3)), &
          "_err: discretisation-error estimate |value at N - value at N/2| (NaN: the", &
-         "  cycle at N/2 failed); the points of the curve have none of their own"])
+         "  cycle at N/2 failed); the points of the curve have none of their own"]
+      if (status /= wa_ok) notes = [character(len=300) :: notes, msg]
+      call write_header(tab, "equilibrium curve of the smooth (Lennard-Jones) model", "lj", &
+         "a_star b_star P_star stable stable_gap event extremum gbar h_min h_max", params, &
+         notes)
       do i = 1, b%n
          call write_row(tab, [b%a_star(i), b%b_star(i), b%p_star(i), &
             merge(1.0_wp, 0.0_wp, b%stable_load(i)), merge(1.0_wp, 0.0_wp, b%stable_gap(i)), &

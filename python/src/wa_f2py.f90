@@ -998,14 +998,19 @@ end subroutine fa_gap_critical_message
 !> on the grid of n points per period (0: automatic), the profile the sinusoid or the m
 !> samples of one period in profile: the first min(n_points, capacity) points;
 !> status 4 (capacity too small) when n_points > capacity. On other failures n_points = 0.
+!> values: P_fc, P_fc_err, P_pf, P_pf_err, W*, W_star_err of the paths on this curve, the
+!> errors from the cycle at N/2 (NaN where a path or the coarse cycle failed: the curve is
+!> still returned, as by the CLI's `branch --model lj`).
 subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, gbar, a_star, b_star, &
-      h_min, h_max, stable_load, stable_gap, event, extremum, n_points, n_period, status, &
-      message)
+      h_min, h_max, stable_load, stable_gap, event, extremum, n_points, n_period, values, &
+      status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_params, only: params_type, new_params
    use wa_bem_solver, only: lj_problem_type, lj_problem
    use wa_bem_trace, only: lj_branch_type, lj_trace
+   use wa_bem_path, only: lj_cycle_type, lj_cycle, lj_paths
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    !> Length of the output arrays, >= 1
    integer(c_int), intent(in) :: capacity
@@ -1032,6 +1037,8 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
    integer(c_int), intent(out) :: n_points
    !> Grid points per period used
    integer(c_int), intent(out) :: n_period
+   !> P_fc, P_fc_err, P_pf, P_pf_err, W_star, W_star_err on this curve (NaN: not computed)
+   real(c_double), intent(out) :: values(6)
    !> wa_ok or the failure's status
    integer(c_int), intent(out) :: status
    !> The failure's message
@@ -1039,12 +1046,15 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
    !f2py threadsafe
    type(params_type) :: params
    type(lj_problem_type) :: problem
-   type(lj_branch_type) :: b
-   integer :: k, stat
+   type(lj_branch_type) :: b, walked
+   type(lj_cycle_type) :: cycle, coarse
+   character(len=256) :: side
+   integer :: k, stat, st2
 
    message = ""
    p_star = 0; gbar = 0; a_star = 0; b_star = 0; h_min = 0; h_max = 0
    stable_load = 0; stable_gap = 0; event = 0; extremum = 0; n_points = 0; n_period = 0
+   values = ieee_value(1.0_c_double, ieee_quiet_nan)
    call new_params(alpha, mu, params, stat, message)
    if (stat == wa_ok .and. use_profile /= 0) then
       call lj_problem(params, problem, stat, message, int(n), profile)
@@ -1066,6 +1076,19 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
          stat = wa_capacity_too_small
          message = "fa_lj_trace: capacity too small"
       end if
+   end if
+   if (stat == wa_ok) then               ! the paths on a copy (they insert landing states)
+      walked = b
+      side = ""
+      call lj_paths(problem, walked, cycle, st2, side)
+      if (st2 == wa_ok) values([1, 3, 5]) = [cycle%p_fc, cycle%p_pf, cycle%w_star]
+      if (st2 == wa_ok .and. use_profile /= 0) then
+         call lj_cycle(params, coarse, st2, side, b%n_period/2, profile, .false.)
+      else if (st2 == wa_ok) then
+         call lj_cycle(params, coarse, st2, side, b%n_period/2, estimate=.false.)
+      end if
+      if (st2 == wa_ok) values([2, 4, 6]) = abs([cycle%p_fc - coarse%p_fc, &
+         cycle%p_pf - coarse%p_pf, cycle%w_star - coarse%w_star])
    end if
    status = int(stat, c_int)
 end subroutine fa_lj_trace

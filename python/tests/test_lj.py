@@ -74,8 +74,11 @@ def test_branch_events_and_stability():
     assert np.all(b.a_star <= b.b_star) and np.all(b.h_min <= b.gbar)
     # far apart: stable under gap control, not under load control (the attraction decays)
     assert b.stable_gap[0] and not b.stable[0]
-    df_cols = b._columns
-    assert "b_star" in df_cols and "stable_gap" in df_cols
+    # the paths on this curve, with the estimates of the cycle at N/2 (as load_path's)
+    p = wa.load_path("lj", 0.3, 1.0, n=128)
+    assert (b.P_fc, b.P_pf, b.P_fc_err, b.P_pf_err) == (p.P_fc, p.P_pf, p.P_fc_err,
+                                                        p.P_pf_err)
+    assert b.W_star == wa.gap_path("lj", 0.3, 1.0, n=128).W_star
 
 
 def test_profile_samples_of_the_sinusoid_and_a_shifted_wave():

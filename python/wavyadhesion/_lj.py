@@ -109,6 +109,12 @@ class LJBranch(ResultMixin):
         :data:`LJ_EVENTS` (0 for ordinary points).
     extremum : numpy.ndarray of int
         +1/-1 maximum/minimum of P* along the curve, +2/-2 of gbar*, else 0.
+    P_fc, P_pf, W_star : float
+        The critical loads and the energy lost per gap cycle of the paths on this curve
+        (NaN where a path failed).
+    P_fc_err, P_pf_err, W_star_err : float
+        Their discretisation-error estimates |value at N - value at N/2| (NaN where the
+        cycle at N/2 failed); the points of the curve have none of their own.
     """
 
     model: str
@@ -125,10 +131,17 @@ class LJBranch(ResultMixin):
     stable_gap: np.ndarray
     event: np.ndarray
     extremum: np.ndarray
+    P_fc: float = float("nan")
+    P_fc_err: float = float("nan")
+    P_pf: float = float("nan")
+    P_pf_err: float = float("nan")
+    W_star: float = float("nan")
+    W_star_err: float = float("nan")
 
     _columns = ("a_star", "b_star", "P_star", "gbar", "h_min", "h_max", "stable",
                 "stable_gap", "event", "extremum")
-    _coordinates = ("model", "alpha", "mu", "N")
+    _coordinates = ("model", "alpha", "mu", "N", "P_fc", "P_fc_err", "P_pf", "P_pf_err",
+                    "W_star", "W_star_err")
     _repr_fields = ("model", "alpha", "mu", "N", "points", "folds_P")
 
     @property
@@ -291,11 +304,11 @@ def lj_trace_branch(alpha, mu, n=None, profile=None) -> LJBranch:
     mu = real_scalar(mu, "mu")
     n, use, samples = lj_inputs(n, profile)
     out = grown(_f.fa_lj_trace, _TRACE_CAPACITY, 10, alpha, mu, n, use, samples)
-    p, g, a, b, hmin, hmax, sl, sg, ev, ex, count, n_period, _, _ = out
+    p, g, a, b, hmin, hmax, sl, sg, ev, ex, count, n_period, v, _, _ = out
     k = int(count)
     return LJBranch("lj", alpha, mu, int(n_period), a[:k].copy(), b[:k].copy(), p[:k].copy(),
                     g[:k].copy(), hmin[:k].copy(), hmax[:k].copy(), sl[:k].astype(bool),
-                    sg[:k].astype(bool), ev[:k].copy(), ex[:k].copy())
+                    sg[:k].astype(bool), ev[:k].copy(), ex[:k].copy(), *map(float, v))
 
 
 def _cycle(alpha, mu, n, use, samples, estimate):
