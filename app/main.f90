@@ -15,6 +15,8 @@ program wavyadhesion_cli
    use wa_cli_paths, only: run_path, run_gap_path, run_gaplaw
    use wa_cli_critical, only: run_critical, run_gap_critical
    use wa_cli_map, only: run_map
+   use wa_cli_options, only: model_lj
+   use wa_cli_lj, only: run_lj_branch, run_lj_path, run_lj_profile
    implicit none
 
    type(cli_options) :: opts
@@ -50,10 +52,22 @@ program wavyadhesion_cli
    rows_failed = .false.
    select case (opts%command)
    case ("point"); call run_point(opts, params, tab)
-   case ("branch"); call run_branch(opts, params, tab)
-   case ("profile"); call run_profile(opts, params, tab)
+   case ("branch")
+      if (opts%model == model_lj) then
+         call run_lj_branch(opts, params, tab)
+      else
+         call run_branch(opts, params, tab)
+      end if
+   case ("profile")
+      if (opts%model == model_lj) then
+         call run_lj_profile(opts, params, tab)
+      else
+         call run_profile(opts, params, tab)
+      end if
    case ("path")
-      if (control == "gap") then
+      if (opts%model == model_lj) then
+         call run_lj_path(opts, params, tab, control == "gap")
+      else if (control == "gap") then
          call run_gap_path(opts, params, tab)
       else
          call run_path(opts, params, tab)

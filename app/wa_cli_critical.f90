@@ -7,12 +7,13 @@ module wa_cli_critical
    use wa_kinds, only: wp
    use wavyadhesion, only: params_type, new_params, critical_sweep, gap_critical_sweep, &
       mechanism_change, gap_critical_count, gap_critical_names, status_message, wa_ok
-   use wa_cli_options, only: cli_options, model_name, si_given, option_message
+   use wa_cli_options, only: cli_options, model_name, si_given, option_message, model_lj
    use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
    use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_status, &
       progress_end
    use wa_text, only: int_text
    use wa_cli_common, only: usage_error
+   use wa_cli_lj, only: run_lj_critical
    implicit none
    private
 
@@ -35,6 +36,10 @@ contains
       integer :: i, j, status, n_failed
 
       call critical_grid(tab, opts, si_params, alpha, mu)
+      if (opts%model == model_lj) then
+         call run_lj_critical(opts, alpha, mu, tab, .false., rows_failed)
+         return
+      end if
       msg = ""
       allocate (p_fc(size(mu), size(alpha)), p_pf(size(mu), size(alpha)), &
          fc_mech(size(mu), size(alpha)), pf_mech(size(mu), size(alpha)), &
@@ -86,6 +91,10 @@ contains
       integer :: i, j, status, n_failed
 
       call critical_grid(tab, opts, si_params, alpha, mu)
+      if (opts%model == model_lj) then
+         call run_lj_critical(opts, alpha, mu, tab, .true., rows_failed)
+         return
+      end if
       msg = ""
       allocate (values(gap_critical_count, size(mu), size(alpha)), row_stat(size(mu)), &
          row_msg(size(mu)))

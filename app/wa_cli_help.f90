@@ -36,14 +36,15 @@ contains
    end subroutine put_lines
 
    pure function help_global() result(text)
-      character(len=100) :: text(60)
-      character(len=100), parameter :: lines(60) = [character(len=100) :: &
+      character(len=100) :: text(70)
+      character(len=100), parameter :: lines(70) = [character(len=100) :: &
          "Usage: wavyadhesion [SUBCOMMAND] [OPTIONS]", &
          "       wavyadhesion help [SUBCOMMAND]      (or SUBCOMMAND --help): one subcommand's", &
          "                                            options, columns and examples", &
          "", &
          "Adhesive contact of a wavy elastic surface against a flat (Westergaard, JKR,", &
-         "double-Westergaard, Maugis-Dugdale). Dimensionless loads P* = mean traction/p*,", &
+         "double-Westergaard, Maugis-Dugdale; smooth Lennard-Jones, --model lj).", &
+         "Dimensionless loads P* = mean traction/p*,", &
          "p* = pi E* Delta/L; widths a* = a/L, c* = c/L.", &
          "", &
          "Subcommands:", &
@@ -66,7 +67,11 @@ contains
          "            retraction) instead of / with the load-control ones", &
          "", &
          "Options:", &
-         "  --model M          westergaard | jkr | dw | md (default dw)", &
+         "  --model M          westergaard | jkr | dw | md | lj (default dw); lj: the smooth", &
+         "                     Lennard-Jones 3-9 law with the same work of adhesion and range", &
+         "                     eps = dgamma/sigma0 = 2 Dcod Delta (mu keeps its meaning; its", &
+         "                     peak tension is 16/(9 sqrt 3) sigma0); branch, path, critical,", &
+         "                     profile; results carry N vs N/2 error estimates (_err)", &
          "  --alpha A          Johnson's parameter, in [1e-12, 1e12] (default 0.3)", &
          "  --mu U             transition parameter, 0 or in [1e-100, 1e100] (default 1)", &
          "  --mu-range LO:HI:N[:log]", &
@@ -77,7 +82,12 @@ contains
          "                     profile: one value)", &
          "  --c-star C         profile: c* of the state (within 1e-6; md at a* = 0: the", &
          "                     Dugdale zone half-width of a state without contact)", &
-         "  --n N              profile: number of points, in [2, 100000] (default 201)", &
+         "  --n N              profile: number of points, in [2, 100000] (default 201);", &
+         "                     --model lj: grid points per period, even, >= 8 (default:", &
+         "                     automatic, 12 points on the interaction zone)", &
+         "  --profile-file F   --model lj: the surface as samples of one period, one height", &
+         "                     over Delta per line at x* = j/M, j = 0..M-1 (# comments);", &
+         "                     default the sinusoid 1 - cos(2 pi x*)", &
          "  --control C        load (default) | gap (path, critical, map) | both (map)", &
          "  --gbar-range LO:HI:N  mean gaps gbar* >= 0 (gaplaw)", &
          "  --format F         table (default: # comments, the first naming the columns,", &
@@ -102,8 +112,8 @@ contains
    end function help_global
 
    pure function help_branch() result(text)
-      character(len=100) :: text(21)
-      character(len=100), parameter :: lines(21) = [character(len=100) :: &
+      character(len=100) :: text(25)
+      character(len=100), parameter :: lines(25) = [character(len=100) :: &
          "Usage: wavyadhesion branch [--model M] [--alpha A] [--mu U]", &
          "", &
          "The equilibrium curve by pseudo-arclength continuation from a* -> 0 to a* = 1/2,", &
@@ -124,7 +134,11 @@ contains
          "", &
          "Examples:", &
          "  wavyadhesion branch --model dw --alpha 0.3 --mu 5", &
-         "  wavyadhesion branch --model md --alpha 0.6 --mu 1 --format csv"]
+         "  wavyadhesion branch --model md --alpha 0.6 --mu 1 --format csv", &
+         "--model lj: columns a_star b_star P_star stable stable_gap event extremum gbar", &
+         "  h_min h_max (b*: half the measure of {h <= 3^(1/6) eps}, the peak tension);", &
+         "  the header gives P_fc, P_pf and W* on the curve with their error estimates.", &
+         "  wavyadhesion branch --model lj --alpha 0.3 --mu 3 --n 256"]
       text = lines
    end function help_branch
 
@@ -152,8 +166,8 @@ contains
    end function help_point
 
    pure function help_profile() result(text)
-      character(len=100) :: text(20)
-      character(len=100), parameter :: lines(20) = [character(len=100) :: &
+      character(len=100) :: text(23)
+      character(len=100), parameter :: lines(23) = [character(len=100) :: &
          "Usage: wavyadhesion profile --a-star X [--c-star C] [--n N] [--model M] ...", &
          "", &
          "Traction and gap of one state at N points x* from -1/2 to 1/2 (crest at x* = 0).", &
@@ -173,13 +187,16 @@ contains
          "", &
          "Examples:", &
          "  wavyadhesion profile --model md --alpha 0.3 --mu 1 --a-star 0.2", &
-         "  wavyadhesion profile --model md --a-star 0 --c-star 0.05 --n 11"]
+         "  wavyadhesion profile --model md --a-star 0 --c-star 0.05 --n 11", &
+         "--model lj: the traced (load-stable) state with a* nearest --a-star, at the N", &
+         "  grid nodes (--n: the grid).", &
+         "  wavyadhesion profile --model lj --alpha 0.3 --mu 1 --a-star 0.2 --n 64"]
       text = lines
    end function help_profile
 
    pure function help_path() result(text)
-      character(len=100) :: text(25)
-      character(len=100), parameter :: lines(25) = [character(len=100) :: &
+      character(len=100) :: text(28)
+      character(len=100), parameter :: lines(28) = [character(len=100) :: &
          "Usage: wavyadhesion path [--control load|gap] [--model M] [--alpha A] [--mu U]", &
          "", &
          "--control load (default): loading from P* = 0 (stage 1) and unloading from full", &
@@ -204,7 +221,10 @@ contains
          "", &
          "Examples:", &
          "  wavyadhesion path --alpha 0.3 --mu 5 --format csv", &
-         "  wavyadhesion path --control gap --model md --alpha 0.3 --mu 1"]
+         "  wavyadhesion path --control gap --model md --alpha 0.3 --mu 1", &
+         "--model lj: columns stage event a_star P_star gbar; the header gives P_fc, P_pf,", &
+         "  P_snap (load control) or W* (gap control) with their error estimates _err.", &
+         "  wavyadhesion path --model lj --control gap --alpha 0.3 --mu 3"]
       text = lines
    end function help_path
 
@@ -233,8 +253,8 @@ contains
    end function help_gaplaw
 
    pure function help_critical() result(text)
-      character(len=100) :: text(24)
-      character(len=100), parameter :: lines(24) = [character(len=100) :: &
+      character(len=100) :: text(27)
+      character(len=100), parameter :: lines(27) = [character(len=100) :: &
          "Usage: wavyadhesion critical [--alpha A[,A...]] [--mu U[,U...] | --mu-range", &
          "       LO:HI:N[:log]] [--control load|gap] [--model M]", &
          "", &
@@ -258,7 +278,10 @@ contains
          "", &
          "Examples:", &
          "  wavyadhesion critical --model dw --alpha 0.3,0.6,1 --mu-range 0.01:10:200:log", &
-         "  wavyadhesion critical --control gap --model md --alpha 0.3 --mu 1,5"]
+         "  wavyadhesion critical --control gap --model md --alpha 0.3 --mu 1,5", &
+         "--model lj: columns alpha mu P_fc P_pf P_fc_err P_pf_err (--control gap: alpha", &
+         "  mu W_star W_fraction W_star_err); _err = |value at N - value at N/2|.", &
+         "  wavyadhesion critical --model lj --alpha 0.3 --mu 3"]
       text = lines
    end function help_critical
 

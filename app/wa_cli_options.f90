@@ -9,7 +9,11 @@ module wa_cli_options
    private
 
    public :: cli_options, parse_command_line, parse_real_list, model_name, given, si_given, &
-      option_message, is_subcommand
+      option_message, is_subcommand, model_lj
+
+   !> --model lj: the smooth (Lennard-Jones) model, run by wa_cli_lj (the C face's
+   !> WA_MODEL_LJ)
+   integer, parameter :: model_lj = 4
 
    integer, parameter :: max_values = 100000
    !> The SI options: moduli (1-4), Estar (5), geometry and adhesion (6-9).
@@ -23,7 +27,10 @@ module wa_cli_options
       real(wp), allocatable :: alpha(:), mu(:), a_star(:)
       !> profile: the state's c* (not allocated: the principal state) and the points
       real(wp), allocatable :: c_star(:)
+      !> profile: the points; --model lj: the grid points per period
       integer :: n_points = 201
+      !> --model lj: the file of profile samples (not allocated: the sinusoid)
+      character(len=:), allocatable :: profile_file
       !> gaplaw: the mean gaps (--gbar-range LO:HI:N)
       real(wp), allocatable :: gbar(:)
       character(len=:), allocatable :: format, output
@@ -165,9 +172,16 @@ contains
       else if (given(opts, "--a-star") .and. opts%command /= "point" .and. &
             opts%command /= "profile") then
          error = "--a-star is only for the point and profile subcommands"
-      else if ((given(opts, "--c-star") .or. given(opts, "--n")) .and. &
-            opts%command /= "profile") then
-         error = "--c-star and --n are only for the profile subcommand"
+      else if ((given(opts, "--c-star") .and. opts%command /= "profile") .or. &
+            (given(opts, "--n") .and. opts%command /= "profile" .and. opts%model /= model_lj)) then
+         error = "--c-star and --n are only for the profile subcommand (--n also for "// &
+            "--model lj: the grid)"
+      else if (given(opts, "--profile-file") .and. opts%model /= model_lj) then
+         error = "--profile-file is only for --model lj"
+      else if (opts%model == model_lj .and. (opts%command == "point" .or. &
+            opts%command == "map" .or. opts%command == "gaplaw")) then
+         error = opts%command//" --model lj is not available in this version (lj: branch, "// &
+            "path, critical, profile)"
       else if (given(opts, "--gbar-range") .and. opts%command /= "gaplaw") then
          error = "--gbar-range is only for the gaplaw subcommand"
       else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then
@@ -229,14 +243,21 @@ contains
          case ("jkr"); opts%model = model_jkr
          case ("dw"); opts%model = model_dw
          case ("md"); opts%model = model_md
+         case ("lj"); opts%model = model_lj
          case default
-            error = "--model: '"//val//"' is not one of westergaard, jkr, dw, md"
+            error = "--model: '"//val//"' is not one of westergaard, jkr, dw, md, lj"
          end select
       case ("--alpha"); call parse_real_list(val, "--alpha", opts%alpha, error)
       case ("--mu"); call parse_real_list(val, "--mu", opts%mu, error)
       case ("--a-star"); call parse_real_list(val, "--a-star", opts%a_star, error)
       case ("--c-star"); call parse_real_list(val, "--c-star", opts%c_star, error)
       case ("--n"); call parse_count(val, opts%n_points, error)
+      case ("--profile-file")
+         if (len(val) == 0) then
+            error = "--profile-file: the file name is empty"
+         else
+            opts%profile_file = val
+         end if
       case ("--mu-range"); call parse_mu_range(val, opts%mu, error)
       case ("--alpha-range"); call parse_mu_range(val, opts%alpha, error, "--alpha-range")
       case ("--gbar-range")
@@ -531,6 +552,7 @@ contains
       case (model_westergaard); name = "westergaard"
       case (model_jkr); name = "jkr"
       case (model_dw); name = "dw"
+      case (model_lj); name = "lj"
       case default; name = "md"
       end select
    end function model_name

@@ -57,7 +57,7 @@ module wa_cli_table
    end type table_type
 
    !> Columns that hold integer codes or flags (every other column is a real).
-   character(len=*), parameter :: integer_names = "|zone_case|stable|event|stage|boundary|"
+   character(len=*), parameter :: integer_names = "|zone_case|stable|event|stage|boundary|stable_gap|extremum|"
 
 contains
 

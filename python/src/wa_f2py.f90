@@ -993,3 +993,281 @@ subroutine fa_gap_critical_message(model, alpha, mu, status, message)
    end if
    status = int(stat, c_int)
 end subroutine fa_gap_critical_message
+
+!> The smooth (Lennard-Jones) model's equilibrium curve from far apart to full contact
+!> on the grid of n points per period (0: automatic), the profile the sinusoid or the m
+!> samples of one period in profile: the first min(n_points, capacity) points;
+!> status 4 (capacity too small) when n_points > capacity. On other failures n_points = 0.
+!> values: P_fc, P_fc_err, P_pf, P_pf_err, W*, W_star_err of the paths on this curve, the
+!> errors from the cycle at N/2 (NaN where a path or the coarse cycle failed: the curve is
+!> still returned, as by the CLI's `branch --model lj`).
+subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, gbar, a_star, b_star, &
+      h_min, h_max, stable_load, stable_gap, event, extremum, n_points, n_period, values, &
+      status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_bem_solver, only: lj_problem_type, lj_problem
+   use wa_bem_trace, only: lj_branch_type, lj_trace
+   use wa_bem_path, only: lj_cycle_type, lj_cycle, lj_paths
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   implicit none
+   !> Length of the output arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, > 0
+   real(c_double), intent(in) :: mu
+   !> Grid points per period (0: automatic)
+   integer(c_int), intent(in) :: n
+   !> 1: the profile is the samples in profile; 0: the sinusoid (profile ignored)
+   integer(c_int), intent(in) :: use_profile
+   !> Number of profile samples
+   integer(c_int), intent(in) :: m
+   !> Heights over Delta at x* = j/m, j = 0..m-1
+   real(c_double), intent(in) :: profile(m)
+   !> P*, gbar*, a*, b*, the smallest and largest gap of each point
+   real(c_double), intent(out) :: p_star(capacity), gbar(capacity), a_star(capacity), &
+      b_star(capacity), h_min(capacity), h_max(capacity)
+   !> 1 where stable under load control / gap control, else 0
+   integer(c_int), intent(out) :: stable_load(capacity), stable_gap(capacity)
+   !> Event code (0, 1 fold of P*, 14 fold of gbar*, 5, 15, 8) and extremum (+-1 P*, +-2 gbar*)
+   integer(c_int), intent(out) :: event(capacity), extremum(capacity)
+   !> Number of points (may exceed capacity)
+   integer(c_int), intent(out) :: n_points
+   !> Grid points per period used
+   integer(c_int), intent(out) :: n_period
+   !> P_fc, P_fc_err, P_pf, P_pf_err, W_star, W_star_err on this curve (NaN: not computed)
+   real(c_double), intent(out) :: values(6)
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(lj_problem_type) :: problem
+   type(lj_branch_type) :: b, walked
+   type(lj_cycle_type) :: cycle, coarse
+   character(len=256) :: side
+   integer :: k, stat, st2
+
+   message = ""
+   p_star = 0; gbar = 0; a_star = 0; b_star = 0; h_min = 0; h_max = 0
+   stable_load = 0; stable_gap = 0; event = 0; extremum = 0; n_points = 0; n_period = 0
+   values = ieee_value(1.0_c_double, ieee_quiet_nan)
+   call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok .and. use_profile /= 0) then
+      call lj_problem(params, problem, stat, message, int(n), profile)
+   else if (stat == wa_ok) then
+      call lj_problem(params, problem, stat, message, int(n))
+   end if
+   if (stat == wa_ok) call lj_trace(problem, b, stat, message)
+   if (stat == wa_ok) then
+      k = min(b%n, int(capacity))
+      p_star(1:k) = b%p_star(1:k); gbar(1:k) = b%gbar(1:k)
+      a_star(1:k) = b%a_star(1:k); b_star(1:k) = b%b_star(1:k)
+      h_min(1:k) = b%h_min(1:k); h_max(1:k) = b%h_max(1:k)
+      stable_load(1:k) = merge(1_c_int, 0_c_int, b%stable_load(1:k))
+      stable_gap(1:k) = merge(1_c_int, 0_c_int, b%stable_gap(1:k))
+      event(1:k) = int(b%event(1:k), c_int); extremum(1:k) = int(b%extremum(1:k), c_int)
+      n_points = int(b%n, c_int)
+      n_period = int(b%n_period, c_int)
+      if (b%n > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_lj_trace: capacity too small"
+      end if
+   end if
+   if (stat == wa_ok) then               ! the paths on a copy (they insert landing states)
+      walked = b
+      side = ""
+      call lj_paths(problem, walked, cycle, st2, side)
+      if (st2 == wa_ok) values([1, 3, 5]) = [cycle%p_fc, cycle%p_pf, cycle%w_star]
+      if (st2 == wa_ok .and. use_profile /= 0) then
+         call lj_cycle(params, coarse, st2, side, b%n_period/2, profile, .false.)
+      else if (st2 == wa_ok) then
+         call lj_cycle(params, coarse, st2, side, b%n_period/2, estimate=.false.)
+      end if
+      if (st2 == wa_ok) values([2, 4, 6]) = abs([cycle%p_fc - coarse%p_fc, &
+         cycle%p_pf - coarse%p_pf, cycle%w_star - coarse%w_star])
+   end if
+   status = int(stat, c_int)
+end subroutine fa_lj_trace
+
+!> The smooth (Lennard-Jones) model's cycle: the events of the load-controlled path
+!> (loading, unloading) and of the gap-controlled path (approach, retraction), P_fc*,
+!> P_pf*, the snap load, W* and their error estimates |value at N - value at N/2|
+!> (estimate = 0: not computed, 0). On failure the counts are 0 and the values NaN.
+subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate, l_stage, l_event, &
+      l_a, l_p, l_g, n_load, g_stage, g_event, g_a, g_p, g_g, n_gap, values, n_period, &
+      status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use wa_status, only: wa_ok, wa_capacity_too_small
+   use wa_params, only: params_type, new_params
+   use wa_bem_path, only: lj_cycle_type, lj_cycle
+   implicit none
+   !> Length of the event arrays, >= 1 (a path holds at most 64 events)
+   integer(c_int), intent(in) :: capacity
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, > 0
+   real(c_double), intent(in) :: mu
+   !> Grid points per period (0: automatic)
+   integer(c_int), intent(in) :: n
+   !> 1: the profile is the samples in profile; 0: the sinusoid (profile ignored)
+   integer(c_int), intent(in) :: use_profile
+   !> Number of profile samples
+   integer(c_int), intent(in) :: m
+   !> Heights over Delta at x* = j/m, j = 0..m-1
+   real(c_double), intent(in) :: profile(m)
+   !> 1: estimate the discretisation errors (the cycle again at N/2); 0: not
+   integer(c_int), intent(in) :: estimate
+   !> Load path: stage (1 loading, 2 unloading), event, a*, P*, gbar* of each event
+   integer(c_int), intent(out) :: l_stage(capacity), l_event(capacity)
+   real(c_double), intent(out) :: l_a(capacity), l_p(capacity), l_g(capacity)
+   !> Number of load-path events (may exceed capacity)
+   integer(c_int), intent(out) :: n_load
+   !> Gap path: stage (1 approach, 2 retraction), event, a*, P*, gbar* of each event
+   integer(c_int), intent(out) :: g_stage(capacity), g_event(capacity)
+   real(c_double), intent(out) :: g_a(capacity), g_p(capacity), g_g(capacity)
+   !> Number of gap-path events (may exceed capacity)
+   integer(c_int), intent(out) :: n_gap
+   !> P_fc, P_pf, P_snap, W_star, W_fraction, P_fc_err, P_pf_err, P_snap_err, W_star_err,
+   !> fc_by_jump, pf_by_jump (1 or 0)
+   real(c_double), intent(out) :: values(11)
+   !> Grid points per period used
+   integer(c_int), intent(out) :: n_period
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(lj_cycle_type) :: c
+   integer :: stat, k
+
+   message = ""
+   l_stage = 0; l_event = 0; l_a = 0; l_p = 0; l_g = 0; n_load = 0
+   g_stage = 0; g_event = 0; g_a = 0; g_p = 0; g_g = 0; n_gap = 0; n_period = 0
+   values = ieee_value(1.0_c_double, ieee_quiet_nan)
+   call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok .and. use_profile /= 0) then
+      call lj_cycle(params, c, stat, message, int(n), profile, estimate /= 0)
+   else if (stat == wa_ok) then
+      call lj_cycle(params, c, stat, message, int(n), estimate=estimate /= 0)
+   end if
+   if (stat == wa_ok) then
+      k = min(c%load%n, int(capacity))
+      l_stage(1:k) = int(c%load%stage(1:k), c_int); l_event(1:k) = int(c%load%event(1:k), c_int)
+      l_a(1:k) = c%load%a_star(1:k); l_p(1:k) = c%load%p_star(1:k)
+      l_g(1:k) = c%load%gbar(1:k)
+      n_load = int(c%load%n, c_int)
+      k = min(c%gap%n, int(capacity))
+      g_stage(1:k) = int(c%gap%stage(1:k), c_int); g_event(1:k) = int(c%gap%event(1:k), c_int)
+      g_a(1:k) = c%gap%a_star(1:k); g_p(1:k) = c%gap%p_star(1:k)
+      g_g(1:k) = c%gap%gbar(1:k)
+      n_gap = int(c%gap%n, c_int)
+      values = [c%p_fc, c%p_pf, c%p_snap, c%w_star, c%w_fraction, c%p_fc_err, c%p_pf_err, &
+         c%p_snap_err, c%w_star_err, merge(1.0_c_double, 0.0_c_double, c%fc_by_jump), &
+         merge(1.0_c_double, 0.0_c_double, c%pf_by_jump)]
+      n_period = int(c%n_period, c_int)
+      if (max(n_load, n_gap) > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_lj_cycle: capacity too small"
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_lj_cycle
+
+!> Gap and traction over the period of one state of the smooth (Lennard-Jones) model: the
+!> traced state with a* nearest a_target (among the load-stable states when there are
+!> any; the CLI's `profile --model lj`), at the N grid nodes x* = j/N - 1/2, j = 0..N-1.
+!> Status 4 (capacity too small) when N > capacity (n_period says how many are needed).
+subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_target, x, &
+      traction, gap, n_period, state, status, message)
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use wa_status, only: wa_ok, wa_capacity_too_small, wa_invalid_argument
+   use wa_params, only: params_type, new_params
+   use wa_bem_solver, only: lj_problem_type, lj_problem
+   use wa_bem_trace, only: lj_branch_type, lj_trace
+   use wa_bem_path, only: lj_profile
+   implicit none
+   !> Length of the output arrays, >= 1
+   integer(c_int), intent(in) :: capacity
+   !> Johnson's parameter, > 0
+   real(c_double), intent(in) :: alpha
+   !> Transition parameter, > 0
+   real(c_double), intent(in) :: mu
+   !> Grid points per period (0: automatic)
+   integer(c_int), intent(in) :: n
+   !> 1: the profile is the samples in profile; 0: the sinusoid (profile ignored)
+   integer(c_int), intent(in) :: use_profile
+   !> Number of profile samples
+   integer(c_int), intent(in) :: m
+   !> Heights over Delta at x* = j/m, j = 0..m-1
+   real(c_double), intent(in) :: profile(m)
+   !> The contact half-width a* of the state wanted, in [0, 1/2]
+   real(c_double), intent(in) :: a_target
+   !> x*, traction p/p* (compressive positive) and gap h/Delta at the grid nodes
+   real(c_double), intent(out) :: x(capacity), traction(capacity), gap(capacity)
+   !> Grid points per period (the number of points)
+   integer(c_int), intent(out) :: n_period
+   !> The state drawn: a*, b*, P*, gbar*
+   real(c_double), intent(out) :: state(4)
+   !> wa_ok or the failure's status
+   integer(c_int), intent(out) :: status
+   !> The failure's message
+   character(len=256), intent(out) :: message
+   !f2py threadsafe
+   type(params_type) :: params
+   type(lj_problem_type) :: problem
+   type(lj_branch_type) :: b
+   real(c_double), allocatable :: xs(:), hs(:), ss(:)
+   real(c_double) :: miss
+   integer :: i, k, j, np, stat
+   logical :: any_stable
+
+   message = ""
+   x = 0; traction = 0; gap = 0; n_period = 0; state = 0
+   stat = wa_ok
+   if (.not. (a_target >= 0.0_c_double .and. a_target <= 0.5_c_double)) then
+      stat = wa_invalid_argument
+      message = "a_star is outside its valid range [0, 1/2]"
+   end if
+   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok .and. use_profile /= 0) then
+      call lj_problem(params, problem, stat, message, int(n), profile)
+   else if (stat == wa_ok) then
+      call lj_problem(params, problem, stat, message, int(n))
+   end if
+   if (stat == wa_ok) call lj_trace(problem, b, stat, message)
+   if (stat == wa_ok) then
+      any_stable = any(b%stable_load(1:b%n))
+      k = 1
+      miss = huge(1.0_c_double)
+      do i = 1, b%n
+         if (any_stable .and. .not. b%stable_load(i)) cycle
+         if (abs(b%a_star(i) - a_target) < miss) then
+            miss = abs(b%a_star(i) - a_target)
+            k = i
+         end if
+      end do
+      np = b%n_period
+      n_period = int(np, c_int)
+      state = [b%a_star(k), b%b_star(k), b%p_star(k), b%gbar(k)]
+      if (np > capacity) then
+         stat = wa_capacity_too_small
+         message = "fa_lj_profile: capacity too small"
+      else
+         allocate (xs(np), hs(np), ss(np))
+         call lj_profile(problem, b%z(:, k), xs, hs, ss)
+         do i = 1, np                      ! from x* = -1/2 (node N/2) on
+            j = modulo(i - 1 + np/2, np) + 1
+            x(i) = xs(j) - merge(1.0_c_double, 0.0_c_double, xs(j) >= 0.5_c_double)
+            traction(i) = -ss(j)
+            gap(i) = hs(j)
+         end do
+      end if
+   end if
+   status = int(stat, c_int)
+end subroutine fa_lj_profile

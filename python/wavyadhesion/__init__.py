@@ -6,7 +6,11 @@ through an f2py extension. Functions take numpy arrays and broadcast.
 
 Loads are P* = mean traction / p*, p* = pi E* Delta / L (negative = tensile); widths
 a* = a/L and c* = c/L lie in [0, 1/2]; parameters alpha > 0 (Johnson's) and mu >= 0
-(transition parameter). Models are named "westergaard", "jkr", "dw", "md".
+(transition parameter). Models are named "westergaard", "jkr", "dw", "md"; "lj" (the
+smooth Lennard-Jones model: same work of adhesion, range eps = 2 Dcod Delta, so mu keeps
+its meaning and its peak tension is 16/(9 sqrt 3) sigma0) in trace_branch, load_path,
+gap_path, critical_forces and profile, with ``n=`` (grid) and ``profile=`` (samples of one period);
+its results carry discretisation-error estimates (``P_fc_err``, ...).
 
 Every result converts itself to SI units: ``result.to_si(params)`` with a
 ``Params.from_dimensional(...)`` gives loads in Pa and N/m, lengths and gaps in m and
@@ -42,6 +46,8 @@ from ._profile import Profile, profile
 from ._params import Params, Scales
 from ._gap import GAP_EVENTS, GAP_STAGES, GapLaw, GapPath, gap_law, gap_path
 from ._results import SIValues
+from ._lj import (LJ_EVENTS, LJ_PATH_EVENTS, LJBranch, LJBranchEvent, LJCriticalForces,
+                  LJGapPath, LJLoadPath)
 
 # The version of the installed distribution, which meson-python takes from the file
 # VERSION at the repository root (python/meson.build), the one source of the number.
@@ -51,6 +57,13 @@ __version__ = _dist_version("wavyadhesion")
 del _dist_version
 
 __all__ = [
+    "LJ_EVENTS",
+    "LJ_PATH_EVENTS",
+    "LJBranch",
+    "LJBranchEvent",
+    "LJCriticalForces",
+    "LJGapPath",
+    "LJLoadPath",
     "GAP_CRITICAL_FIELDS",
     "GapCritical",
     "gap_critical",

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import List, NamedTuple
+from typing import List, NamedTuple, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _wa_f2py as _f
 from ._args import grown, model_code, model_name, real_scalar
+from ._lj import LJBranch, is_lj, lj_trace_branch, reject_lj_inputs
 from ._results import ResultMixin
 
 # Points asked for in a first trace_branch() call. Branches have a few hundred points
@@ -136,7 +138,9 @@ class Branch(ResultMixin):
         return [e for e in self.events if e.kind == "switch"]
 
 
-def trace_branch(model: str, alpha: float, mu: float) -> Branch:
+def trace_branch(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
+                 profile: Optional[ArrayLike] = None
+                 ) -> Union[Branch, LJBranch]:
     """The equilibrium branch P*(a*), c*(a*) over 0 < a* <= 1/2, with its folds and
     zone-case switches.
 
@@ -147,12 +151,15 @@ def trace_branch(model: str, alpha: float, mu: float) -> Branch:
 
     Parameters
     ----------
-    model : {"westergaard", "jkr", "dw", "md"}
-        The contact model.
+    model : {"westergaard", "jkr", "dw", "md", "lj"}
+        The contact model ("lj": the smooth Lennard-Jones model, doc/theory.md "Smooth
+        adhesion"; it returns an :class:`LJBranch`, traced from far apart to full contact).
     alpha : float
         Johnson's parameter, alpha > 0.
     mu : float
-        Transition parameter, mu >= 0.
+        Transition parameter, mu >= 0 (lj: mu > 0).
+    n, profile : optional
+        ``model="lj"`` only: the grid and the surface samples, as in :func:`load_path`.
 
     Returns
     -------
@@ -176,6 +183,9 @@ def trace_branch(model: str, alpha: float, mu: float) -> Branch:
     >>> round(b.folds[1].P_star, 12)
     0.387507241744
     """
+    if is_lj(model):
+        return lj_trace_branch(alpha, mu, n, profile)
+    reject_lj_inputs(n, profile)
     code = model_code(model)
     alpha = real_scalar(alpha, "alpha")
     mu = real_scalar(mu, "mu")

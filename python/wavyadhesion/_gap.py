@@ -3,7 +3,7 @@ gap law P*(gbar*) (:func:`gap_law`)."""
 
 from __future__ import annotations
 
-from typing import List, NamedTuple, Optional, Tuple
+from typing import List, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -11,6 +11,7 @@ from numpy.typing import ArrayLike
 from . import _wa_f2py as _f
 from ._args import (PATH_CAPACITY, chunk_slices, float_array, grown, index_text, model_code,
                     model_name, real_scalar)
+from ._lj import LJGapPath, is_lj, lj_gap_path, reject_lj_inputs
 from ._results import ResultMixin
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status
 
@@ -169,7 +170,9 @@ class GapPath(NamedTuple):
                 for s, e, g, p in zip(self.stage, self.event, self.gbar, self.P_star)]
 
 
-def gap_path(model: str, alpha: float, mu: float) -> GapPath:
+def gap_path(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
+             profile: Optional[ArrayLike] = None
+             ) -> Union[GapPath, LJGapPath]:
     """Approach from far apart to full contact and retraction under gap control, with
     the energy lost per cycle: the events (first interaction, jumps at constant gbar*,
     contact made or lost, full contact reached or left, interaction lost) with their
@@ -177,10 +180,13 @@ def gap_path(model: str, alpha: float, mu: float) -> GapPath:
 
     Parameters
     ----------
-    model : {"westergaard", "jkr", "dw", "md"}
-        The contact model.
+    model : {"westergaard", "jkr", "dw", "md", "lj"}
+        The contact model ("lj": an :class:`LJGapPath`, with W* and its error estimate
+        W_star_err).
     alpha, mu : float
-        Johnson's parameter (> 0) and the transition parameter (>= 0).
+        Johnson's parameter (> 0) and the transition parameter (>= 0; lj: > 0).
+    n, profile : optional
+        ``model="lj"`` only: the grid and the surface samples, as in :func:`load_path`.
 
     Returns
     -------
@@ -202,6 +208,9 @@ def gap_path(model: str, alpha: float, mu: float) -> GapPath:
     >>> path.events[0][:2], round(path.W_star, 10)
     (('approach', 'touch'), 0.0070144396)
     """
+    if is_lj(model):
+        return lj_gap_path(alpha, mu, n, profile)
+    reject_lj_inputs(n, profile)
     code = model_code(model)
     alpha = real_scalar(alpha, "alpha")
     mu = real_scalar(mu, "mu")

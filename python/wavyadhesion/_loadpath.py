@@ -16,6 +16,8 @@ from ._args import (PATH_CAPACITY, at_index, check_sweep_arguments, chunk_size_f
 from ._branch import EVENTS
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status, message_text
 from ._parallel import iter_chunks, make_progress
+from ._lj import (LJCriticalForces, LJLoadPath, is_lj, lj_critical_forces, lj_load_path,
+                  reject_lj_inputs)
 from ._results import ResultMixin
 
 _CHUNK_SWEEP = 16
@@ -188,7 +190,9 @@ class CriticalForces(ResultMixin):
         return (self.P_fc, self.P_pf)[i]
 
 
-def load_path(model: str, alpha: float, mu: float) -> LoadPath:
+def load_path(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
+              profile: Optional[ArrayLike] = None
+              ) -> Union[LoadPath, LJLoadPath]:
     """Load-controlled loading and unloading along the branch (doc/theory.md, "Load paths and critical forces").
 
     Loading starts from separation at P* = 0 (jump-in), rises along stable pieces and
@@ -198,12 +202,20 @@ def load_path(model: str, alpha: float, mu: float) -> LoadPath:
 
     Parameters
     ----------
-    model : {"westergaard", "jkr", "dw", "md"}
-        The contact model.
+    model : {"westergaard", "jkr", "dw", "md", "lj"}
+        The contact model ("lj": an :class:`LJLoadPath`, with P_fc, P_pf, P_snap and
+        their error estimates P_fc_err, P_pf_err, P_snap_err).
     alpha : float
         Johnson's parameter, alpha > 0.
     mu : float
-        Transition parameter, mu >= 0.
+        Transition parameter, mu >= 0 (lj: mu > 0).
+    n : int, optional
+        ``model="lj"`` only: grid points per period (even, >= 8; default automatic, 12
+        points on the interaction zone).
+    profile : array_like, optional
+        ``model="lj"`` only: the surface as samples of one period, heights over Delta at
+        x* = j/M, j = 0..M-1 (their mean does not matter); default the sinusoid
+        1 - cos(2 pi x*).
 
     Returns
     -------
@@ -229,6 +241,9 @@ def load_path(model: str, alpha: float, mu: float) -> LoadPath:
     >>> path.mechanisms
     {'full_contact': 'jump_case1', 'pull_off': 'jump_case2'}
     """
+    if is_lj(model):
+        return lj_load_path(alpha, mu, n, profile)
+    reject_lj_inputs(n, profile)
     code = model_code(model)
     alpha = real_scalar(alpha, "alpha")
     mu = real_scalar(mu, "mu")
@@ -243,8 +258,9 @@ def load_path(model: str, alpha: float, mu: float) -> LoadPath:
 
 def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
                     executor: Optional[Executor] = None, chunk_size: Optional[int] = None,
-                    progress: Union[bool, Callable[[int, int], Any], None] = None
-                    ) -> CriticalForces:
+                    progress: Union[bool, Callable[[int, int], Any], None] = None,
+                    n: Optional[int] = None, profile: Optional[ArrayLike] = None
+                    ) -> Union[CriticalForces, LJCriticalForces]:
     """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
     unloading), vectorised over mu and broadcast with alpha.
 
@@ -279,6 +295,12 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
         True: a progress bar on stderr (tqdm when installed, else a plain line); a
         callable: called as ``progress(done, total)`` (points) after each chunk, in
         order (on an executor: as the chunks come back). None (default): nothing.
+    n, profile : optional
+        ``model="lj"`` only: the grid and the surface samples, as in load_path.
+        With ``model="lj"`` the points run serially (about a second each at the
+        automatic grid) and the result is an :class:`LJCriticalForces`: ``P_fc, P_pf``
+        with ``P_fc_err, P_pf_err`` (|value at N - value at N/2|), the snap load and W*
+        with theirs, and ``N``; executor, chunk_size and progress are not used.
 
     Returns
     -------
@@ -308,6 +330,9 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
     >>> P_fc.round(6), P_pf.round(6)
     (array([0.977827, 0.778274, 0.387507]), array([-0.022173, -0.088714, -0.119953]))
     """
+    if is_lj(model):
+        return lj_critical_forces(alpha, mu, n, profile, errors)
+    reject_lj_inputs(n, profile)
     code = model_code(model)
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'", 1)

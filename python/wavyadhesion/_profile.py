@@ -12,6 +12,7 @@ from . import _wa_f2py as _f
 from ._args import (at_index, chunk_slices, flat_f64, float_array, model_code, model_name,
                     real_scalar)
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, raise_status
+from ._lj import is_lj, lj_profile, reject_lj_inputs
 from ._results import ResultMixin, TupleCompat
 
 # Points per facade call (Ctrl-C is seen between two calls).
@@ -39,6 +40,11 @@ class Profile(TupleCompat, ResultMixin):
         The state drawn: its interaction-zone half-width, load and mean gap.
     zone_case : int
         Its zone case.
+    b_star : float
+        ``model="lj"``: the state's b* (half the measure of {h <= 3^(1/6) eps}; a_star is
+        then the state's a*, c_star and zone_case are None).
+    N : int
+        ``model="lj"``: grid points per period (the points of the profile).
     """
 
     x: np.ndarray
@@ -52,10 +58,13 @@ class Profile(TupleCompat, ResultMixin):
     P_star: Optional[float] = None
     zone_case: Optional[int] = None
     gbar: Optional[float] = None
+    b_star: Optional[float] = None
+    N: Optional[int] = None
 
     _tuple_fields = ("x", "traction", "gap")
     _columns = ("x", "traction", "gap")
-    _coordinates = ("model", "alpha", "mu", "a_star", "c_star", "P_star", "zone_case", "gbar")
+    _coordinates = ("model", "alpha", "mu", "a_star", "c_star", "P_star", "zone_case", "gbar",
+                    "b_star", "N")
     _repr_fields = ("model", "alpha", "mu", "a_star", "c_star", "P_star", "x")
 
 
@@ -64,7 +73,8 @@ _PROFILE_POINTS = 401
 
 
 def profile(model: str, alpha: float, mu: float, a_star: float,
-            c_star: Optional[float] = None, x: Optional[ArrayLike] = None) -> Profile:
+            c_star: Optional[float] = None, x: Optional[ArrayLike] = None, *,
+            n: Optional[int] = None, profile: Optional[ArrayLike] = None) -> Profile:
     """Traction p(x)/p* and gap h(x)/Delta of one equilibrium state.
 
     The state is the one at `a_star` whose c* is nearest `c_star` among :func:`roots`
@@ -88,6 +98,11 @@ def profile(model: str, alpha: float, mu: float, a_star: float,
     x : array_like, optional
         Points x* = x/L, any finite values (period 1, crest at 0). Default: 401 points
         from -1/2 to 1/2.
+    n, profile : optional
+        ``model="lj"`` only: the grid and the surface samples, as in :func:`load_path`.
+        The state is then the traced one with a* nearest `a_star` (among the load-stable
+        states when there are any), drawn at the N grid nodes from x* = -1/2 (`c_star`
+        and `x` must be None).
 
     Returns
     -------
@@ -113,6 +128,15 @@ def profile(model: str, alpha: float, mu: float, a_star: float,
     >>> bool(h.min() >= 0 and h[200] == 0)
     True
     """
+    if is_lj(model):
+        if c_star is not None or x is not None:
+            raise InvalidArgumentError("c_star and x do not apply to model='lj' (no zone "
+                                       "edge; the profile is drawn at the grid nodes)",
+                                       INVALID_ARGUMENT)
+        xs, t, h, n_period, (a, b, p, g) = lj_profile(alpha, mu, a_star, n, profile)
+        return Profile(xs, t, h, "lj", float(alpha), float(mu), a, None, p, None, g, b,
+                       n_period)
+    reject_lj_inputs(n, profile)
     code = model_code(model)
     alpha = real_scalar(alpha, "alpha")
     mu = real_scalar(mu, "mu")

@@ -32,12 +32,14 @@ SI_FIELDS: Dict[str, Tuple[Tuple[str, str, str], ...]] = {
     "dPdg_approach": (("dPdg_approach", "stiffness", "Pa/m"),),
     "dPdg_retract": (("dPdg_retract", "stiffness", "Pa/m"),),
 }
-for _name in ("P_fc", "P_pf", "P_approach", "P_retract", "P_jump_in", "P_min",
+for _name in ("P_fc", "P_pf", "P_snap", "P_fc_err", "P_pf_err", "P_snap_err", "P_approach",
+              "P_retract", "P_jump_in", "P_min",
               "P_contact_lost"):
     SI_FIELDS[_name] = ((_name, "pressure", "Pa"), ("F" + _name[1:], "force", "N/m"))
 for _name in ("a_jump_in", "a_P_min"):
     SI_FIELDS[_name] = ((_name, "length", "m"),)
-for _name in ("gbar", "g_touch", "g_contact", "g_P_min", "g_contact_lost",
+SI_FIELDS["W_star_err"] = (("W_err", "energy", "J/m^2"),)
+for _name in ("gbar", "h_min", "h_max", "g_touch", "g_contact", "g_P_min", "g_contact_lost",
               "g_interaction_lost"):
     SI_FIELDS[_name] = ((_name, "amplitude", "m"),)
 

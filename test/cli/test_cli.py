@@ -12,6 +12,7 @@ import subprocess
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
@@ -985,3 +986,136 @@ def test_map_says_it_is_computing_on_a_terminal(cli):
     assert "map: computing the boundaries over 2 alpha" in err
     assert err.rstrip(" ").endswith("\r")
     assert out.splitlines()[0] == "# boundary alpha mu"
+
+
+# --model lj (the smooth Lennard-Jones model): the reference values are those of the
+# Fortran bem suite (test/unit) at alpha = 0.3, mu = 3 and the automatic grid N = 512; the
+# CLI must reproduce them to their error estimates.
+LJ_P_FC_REF = 0.99600001838
+LJ_P_PF_REF = -0.40595099926
+
+
+def test_lj_critical_matches_the_fortran_suite_with_error_columns(cli):
+    res = run(cli, "critical", "--model", "lj", "--alpha", "0.3", "--mu", "3")
+    lines = res.stdout.splitlines()
+    assert "# columns: alpha mu P_fc P_pf P_fc_err P_pf_err" in lines
+    assert any("16/(9 sqrt 3) sigma0" in l for l in lines)
+    assert any("(4 alpha^4)^(1/3)/mu" in l for l in lines)
+    assert any("N = 512" in l for l in lines)
+    alpha, mu, p_fc, p_pf, fc_err, pf_err = map(float, lines[-1].split())
+    assert (alpha, mu) == (0.3, 3.0)
+    # 1e-11: the rounding of the quoted reference values
+    assert abs(p_fc - LJ_P_FC_REF) <= fc_err + 1e-11
+    assert abs(p_pf - LJ_P_PF_REF) <= pf_err + 1e-11
+    assert 0 < fc_err < 1e-6 and 0 < pf_err < 1e-6
+
+
+def test_lj_path_gap_prints_the_cycle_and_w_star(cli):
+    res = run(cli, "path", "--model", "lj", "--control", "gap", "--alpha", "0.3", "--mu", "3",
+              "--format", "json")
+    doc = json.loads(res.stdout)
+    assert doc["model"] == "lj"
+    v = doc["values"]
+    assert v["N"] == 512
+    assert 0 < v["W_star_err"] < 1e-3 * v["W_star"]
+    assert v["W_fraction"] == pytest.approx(v["W_star"] / (math.pi * 0.3**2 / 2), rel=1e-12)
+    cols = doc["data"]
+    stage, event = cols["stage"], cols["event"]
+    assert set(stage) == {1, 2}
+    assert stage == sorted(stage)                 # approach, then retraction
+    # every jump keeps gbar*: each jump start is followed by its end at the same gbar*
+    g = cols["gbar"]
+    for i, e in enumerate(event):
+        if e == 3:
+            assert event[i + 1] == 4
+            assert g[i + 1] == pytest.approx(g[i], rel=1e-9)
+    # full contact is reached at P_fc of load control (the end of the trace is shared)
+    assert 5 in event and 6 in event
+
+
+def test_lj_path_load_events_and_header(cli):
+    res = run(cli, "path", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "256",
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == ["stage", "event", "a_star", "P_star", "gbar"]
+    events = [int(r["event"]) for r in table]
+    assert events[-1] == 7                         # pull-off ends the unloading
+    assert float(table[-1]["P_star"]) == pytest.approx(LJ_P_PF_REF, abs=1e-8)
+
+
+def test_lj_branch_columns_and_stability(cli):
+    res = run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "128",
+              "--format", "csv")
+    table = rows(res.stdout)
+    assert list(table[0].keys()) == ["a_star", "b_star", "P_star", "stable", "stable_gap",
+                                     "event", "extremum", "gbar", "h_min", "h_max"]
+    assert int(table[0]["event"]) == 8 and int(table[-1]["event"]) == 8
+    assert float(table[-1]["a_star"]) == 0.5
+    for r in table:
+        assert float(r["a_star"]) <= float(r["b_star"]) <= 0.5
+        assert float(r["h_min"]) <= float(r["gbar"]) <= float(r["h_max"])
+
+
+def test_lj_profile_file_of_the_sinusoid_gives_the_default(cli, tmp_path):
+    """Samples of 1 - cos(2 pi x) at x = j/M are the default profile (to rounding)."""
+    f = tmp_path / "wave.txt"
+    x = np.arange(64) / 64
+    f.write_text("# one period, heights over Delta\n" +
+                 "\n".join(repr(float(v)) for v in 1 - np.cos(2 * np.pi * x)) + "\n")
+    base = ["critical", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "128",
+            "--format", "csv"]
+    a = rows(run(cli, *base).stdout)[0]
+    b = rows(run(cli, *base, "--profile-file", str(f)).stdout)[0]
+    for k in ("P_fc", "P_pf"):
+        assert float(b[k]) == pytest.approx(float(a[k]), abs=1e-11)
+
+
+def test_lj_profile_state(cli):
+    res = run(cli, "profile", "--model", "lj", "--alpha", "0.3", "--mu", "1", "--a-star",
+              "0.2", "--n", "64", "--format", "json")
+    doc = json.loads(res.stdout)
+    x = doc["data"]["x_star"]
+    assert len(x) == 64 and x[0] == -0.5 and x == sorted(x)
+    # the mean traction is the load (compressive positive)
+    assert np.mean(doc["data"]["traction"]) == pytest.approx(doc["values"]["P_star"],
+                                                                abs=1e-10)
+    assert np.mean(doc["data"]["gap"]) == pytest.approx(doc["values"]["gbar"], abs=1e-10)
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["point", "--model", "lj", "--a-star", "0.1"], "point --model lj is not available"),
+    (["map", "--model", "lj"], "map --model lj is not available"),
+    (["gaplaw", "--model", "lj", "--gbar-range", "0:1:3"], "gaplaw --model lj"),
+    (["branch", "--model", "lj", "--n", "7"], "even and >= 8"),
+    (["branch", "--model", "dw", "--n", "64"], "--n are only for the profile"),
+    (["branch", "--model", "md", "--profile-file", "x"], "--profile-file is only for --model lj"),
+    (["branch", "--model", "lj", "--profile-file", "/nonexistent/p.txt"], "cannot open"),
+    (["critical", "--model", "lj", "--mu", "0"], "mu must be > 0"),
+    (["profile", "--model", "lj", "--a-star", "0.1", "--c-star", "0.2"], "--c-star does not"),
+])
+def test_lj_what_does_not_apply_exits_2(cli, args, needle):
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2
+    assert needle in res.stderr
+    assert res.stdout == ""
+
+
+def test_lj_bad_profile_line_exits_2(cli, tmp_path):
+    f = tmp_path / "bad.txt"
+    f.write_text("0\n0.5\nabc\n1\n")
+    res = run(cli, "branch", "--model", "lj", "--profile-file", str(f), check=False)
+    assert res.returncode == 2
+    assert "line 3" in res.stderr
+
+
+def test_lj_branch_header_carries_the_critical_values_with_errors(cli):
+    doc = json.loads(run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n",
+                         "128", "--format", "json").stdout)
+    v = doc["values"]
+    assert v["N"] == 128
+    assert abs(v["P_fc"] - LJ_P_FC_REF) <= v["P_fc_err"] + 1e-10
+    assert abs(v["P_pf"] - LJ_P_PF_REF) <= v["P_pf_err"] + 1e-10
+    # the cycle at N/2 = 4 cannot be computed: the estimates are NaN, the curve is written
+    doc = json.loads(run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n",
+                         "8", "--format", "json").stdout)
+    assert doc["values"]["P_fc_err"] == "NaN" and doc["n_rows"] > 0

@@ -97,6 +97,15 @@ def gap_critical_value(model, alpha, mu, column):
     return float(row.split()[names.index(column)])
 
 
+def lj_value(column, *args):
+    """A column of `wavyadhesion critical --model lj` (load control; `--control gap` with
+    args "--control", "gap") at alpha = 0.3, mu = 3, by its name in the header."""
+    out = cli("critical", "--model", "lj", "--alpha", "0.3", "--mu", "3", *args)
+    names = [line for line in out.splitlines() if line.startswith("# columns:")][0].split()[2:]
+    row = [line for line in out.splitlines() if line.strip() and not line.startswith("#")][-1]
+    return float(row.split()[names.index(column)])
+
+
 def gap_w_star(model, alpha, mu):
     """W* of `wavyadhesion path --control gap`."""
     out = cli("path", "--control", "gap", "--model", model, "--alpha", alpha, "--mu", mu)
@@ -131,6 +140,13 @@ CLAIMS = [
     ("doc/python.md", 'repr(wa.trace_branch("dw", 0.3, 5.0))` is\n`{}`',
      lambda: python_value('repr(wa.trace_branch("dw", 0.3, 5.0))')),
     ("doc/user-guide.md", "closed forms ({} points", lambda: branch_points("westergaard")),
+    ("doc/user-guide.md", "with P_fc = {} (error", lambda: f"{lj_value('P_fc'):.10f}"),
+    ("doc/user-guide.md", "estimate {}) and P_pf", lambda: f"{lj_value('P_fc_err'):.1e}"),
+    ("doc/user-guide.md", "and P_pf = {} (", lambda: f"{lj_value('P_pf'):.10f}"),
+    ("doc/user-guide.md", "({}) at N = 512", lambda: f"{lj_value('P_pf_err'):.1e}"),
+    ("doc/user-guide.md", "and W* = {} (error", lambda: sci(gap_w_star("lj", "0.3", "3"), 4)),
+    ("doc/user-guide.md", "(error estimate {}) in units of p*Δ",
+     lambda: f"{lj_value('W_star_err', '--control', 'gap'):.1e}".replace("e-07", "e-7")),
     ("doc/theory.md", "against P_pf = {}", lambda: sci(critical(*GAP_PF_DW)[1], 5)),
     ("doc/theory.md", "P_min is now {})", lambda: sci(gap_critical_value(*GAP_PF_DW, "P_min"), 5)),
     ("doc/theory.md", "1.68596e-6, now {}).", lambda: sci(gap_w_star(*GAP_FLOOR_MD), 6)),

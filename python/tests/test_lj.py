@@ -1,0 +1,137 @@
+"""model="lj" (the smooth Lennard-Jones model) in trace_branch, load_path, gap_path and
+critical_forces: the values of the Fortran bem suite, the error estimates, n= and
+profile=, and the errors. Small grids (n = 128) except where the automatic grid is the
+point; each cycle at the automatic grid (N = 512 at alpha 0.3, mu 3) takes about a second.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import wavyadhesion as wa
+
+# The Fortran bem suite's values at alpha = 0.3, mu = 3, automatic grid
+P_FC_REF = 0.99600001838
+P_PF_REF = -0.40595099926
+
+
+@pytest.fixture(scope="module")
+def path_auto():
+    return wa.load_path("lj", 0.3, 3.0)
+
+
+def test_load_path_matches_the_fortran_suite(path_auto):
+    p = path_auto
+    assert isinstance(p, wa.LJLoadPath)
+    assert p.N == 512
+    # 1e-11: the rounding of the quoted reference values
+    assert abs(p.P_fc - P_FC_REF) <= p.P_fc_err + 1e-11
+    assert abs(p.P_pf - P_PF_REF) <= p.P_pf_err + 1e-11
+    assert 0 < p.P_fc_err < 1e-8 and 0 < p.P_pf_err < 1e-8
+    assert p.event[-1] == 7 and p.P_star[-1] == p.P_pf
+    assert p.pf_by_jump
+    assert "P_fc_err" in repr(p)
+
+
+def test_critical_forces_unpacks_with_error_estimates():
+    c = wa.critical_forces("lj", 0.3, [3.0, 2.5], n=128)
+    assert isinstance(c, wa.LJCriticalForces)
+    p_fc, p_pf = c
+    assert p_fc.shape == (2,) and np.all(c.N == 128) and np.all(c.ok)
+    # n = 128 is resolved at these mu: within the estimate of the reference at N = 512
+    assert abs(p_fc[0] - P_FC_REF) <= c.P_fc_err[0] + 1e-10
+    assert abs(p_pf[0] - P_PF_REF) <= c.P_pf_err[0] + 1e-10
+    assert np.all(c.P_fc_err > 0) and np.all(c.W_star_err > 0)
+
+
+def test_critical_forces_errors_nan_names_the_failed_point():
+    c = wa.critical_forces("lj", 0.3, [3.0, 0.0], n=128, errors="nan")
+    assert math.isnan(c.P_fc[1]) and c.status[1] == 1
+    assert "mu must be > 0" in c.messages[(1,)]
+    with pytest.raises(wa.InvalidArgumentError, match="mu must be > 0"):
+        wa.critical_forces("lj", 0.3, 0.0, n=128)
+
+
+def test_gap_path_w_star_and_jumps_at_constant_gap():
+    g = wa.gap_path("lj", 0.3, 3.0, n=256)   # W* needs N/2 = 128 resolved
+    assert isinstance(g, wa.LJGapPath)
+    assert g.W_fraction == pytest.approx(g.W_star / (math.pi * 0.3**2 / 2), rel=1e-12)
+    assert 0 < g.W_star_err < 0.01 * g.W_star
+    # W* at the automatic grid (N = 512, the CLI's path --model lj --control gap)
+    assert abs(g.W_star - 9.1305609826e-3) <= g.W_star_err + 1e-12
+    starts = np.flatnonzero(g.event == 3)
+    assert starts.size >= 2
+    np.testing.assert_allclose(g.gbar[starts + 1], g.gbar[starts], rtol=1e-9)
+    # the load and gap paths of one cycle share the trace: full contact at P_fc
+    p = wa.load_path("lj", 0.3, 3.0, n=256)
+    assert g.P_star[g.event == 5][0] == pytest.approx(p.P_fc, abs=1e-12)
+
+
+def test_branch_events_and_stability():
+    b = wa.trace_branch("lj", 0.3, 1.0, n=128)
+    assert isinstance(b, wa.LJBranch) and b.N == 128
+    assert b.event[0] == 8 and b.event[-1] == 8 and b.a_star[-1] == 0.5
+    assert np.all(b.a_star <= b.b_star) and np.all(b.h_min <= b.gbar)
+    # far apart: stable under gap control, not under load control (the attraction decays)
+    assert b.stable_gap[0] and not b.stable[0]
+    # the paths on this curve, with the estimates of the cycle at N/2 (as load_path's)
+    p = wa.load_path("lj", 0.3, 1.0, n=128)
+    assert (b.P_fc, b.P_pf, b.P_fc_err, b.P_pf_err) == (p.P_fc, p.P_pf, p.P_fc_err,
+                                                        p.P_pf_err)
+    assert b.W_star == wa.gap_path("lj", 0.3, 1.0, n=128).W_star
+
+
+def test_profile_samples_of_the_sinusoid_and_a_shifted_wave():
+    """The samples of 1 - cos(2 pi x) give the default; the same wave shifted by a third
+    of a grid step (an uneven profile: solved on the whole period, not the half) gives the
+    same critical loads, to the error estimate."""
+    base = wa.critical_forces("lj", 0.3, 3.0, n=128)
+    x = np.arange(64) / 64
+    same = wa.critical_forces("lj", 0.3, 3.0, n=128, profile=1 - np.cos(2 * np.pi * x))
+    assert same.P_fc == pytest.approx(base.P_fc, abs=1e-11)
+    assert same.P_pf == pytest.approx(base.P_pf, abs=1e-11)
+    shifted = wa.critical_forces("lj", 0.3, 3.0, n=128,
+                                 profile=1 - np.cos(2 * np.pi * (x + 1 / 192)))
+    assert abs(shifted.P_fc - base.P_fc) <= base.P_fc_err + shifted.P_fc_err + 1e-9
+    assert abs(shifted.P_pf - base.P_pf) <= base.P_pf_err + shifted.P_pf_err + 1e-9
+
+
+def test_to_si_carries_the_error_estimates():
+    params = wa.Params.from_dimensional(Estar=1e9, period=1e-4, amplitude=1e-6,
+                                        work_of_adhesion=0.05, peak_stress=3e6)
+    p = wa.load_path("lj", params.alpha, params.mu, n=128)
+    si = p.to_si(params)
+    assert si.units["P_fc_err"] == "Pa"
+    assert si.P_fc_err == pytest.approx(p.P_fc_err * params.scales.pressure)
+
+
+@pytest.mark.parametrize("kwargs, exc, needle", [
+    (dict(model="lj", n=7), wa.InvalidArgumentError, "even and >= 8"),
+    (dict(model="lj", n=2.5), wa.InvalidArgumentError, "n = 2.5"),
+    (dict(model="lj", profile=[0.0, 1.0]), wa.InvalidArgumentError, "at least 4"),
+    (dict(model="lj", profile=np.zeros((2, 4))), wa.InvalidArgumentError, "1-D"),
+    (dict(model="dw", n=64), wa.InvalidArgumentError, "only for model='lj'"),
+    (dict(model="md", profile=[0, 1, 2, 1]), wa.InvalidArgumentError, "only for model='lj'"),
+])
+def test_bad_lj_arguments(kwargs, exc, needle):
+    model = kwargs.pop("model")
+    for func in (wa.trace_branch, wa.load_path, wa.gap_path, wa.critical_forces):
+        with pytest.raises(exc, match=needle.replace("(", r"\(").replace(")", r"\)")):
+            func(model, 0.3, 3.0, **kwargs)
+
+
+def test_profile_of_a_traced_state():
+    """The state with a* nearest 0.2 at n = 64: its mean traction is P* and its mean gap
+    gbar* (independent of how the state was chosen); the CLI draws the same state."""
+    p = wa.profile("lj", 0.3, 1.0, 0.2, n=64)
+    assert p.N == 64 and p.x.size == 64 and p.x[0] == -0.5
+    assert abs(p.a_star - 0.2) < 0.02
+    assert np.mean(p.traction) == pytest.approx(p.P_star, abs=1e-12)
+    assert np.mean(p.gap) == pytest.approx(p.gbar, abs=1e-12)
+    b = wa.trace_branch("lj", 0.3, 1.0, n=64)
+    k = np.flatnonzero(b.P_star == p.P_star)
+    assert k.size == 1 and b.stable[k[0]] and b.b_star[k[0]] == p.b_star
+    with pytest.raises(wa.InvalidArgumentError, match="c_star and x do not apply"):
+        wa.profile("lj", 0.3, 1.0, 0.2, c_star=0.3, n=64)
+    with pytest.raises(wa.InvalidArgumentError, match="only for model='lj'"):
+        wa.profile("dw", 0.3, 1.0, 0.2, n=64)
