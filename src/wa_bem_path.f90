@@ -48,6 +48,8 @@ module wa_bem_path
       integer :: stage(max_events) = 0, event(max_events) = 0
       real(wp) :: p_star(max_events) = 0.0_wp, gbar(max_events) = 0.0_wp, &
          a_star(max_events) = 0.0_wp
+      !> More events than max_events were to be recorded (lj_paths then fails)
+      logical :: overflow = .false.
    end type lj_path_type
 
    !> Both paths and the critical values of one cycle, with error estimates.
@@ -172,14 +174,23 @@ contains
       !> wa_ok; wa_no_solution where a path cannot be completed (no load-stable state at
       !> P* = 0, loading stops short of full contact, no stable landing state after a jump,
       !> a walk ends away from an extremum); wa_not_converged where an unloading landing
-      !> state does not converge or loading or unloading takes more than 30 jumps
+      !> state does not converge, a stage takes more than 30 jumps or a path more than 64
+      !> events (the spurious folds of an unresolved grid)
       integer, intent(out) :: status
       !> Receives the reason on failure (what failed)
       character(len=*), intent(inout), optional :: errmsg
       cycle%n_period = problem%grid%n_period
       call load_control(problem, branch, cycle, status, errmsg)
       if (status /= wa_ok) return
+      if (cycle%load%overflow) then
+         call fail(wa_not_converged, "lj load path: more than 64 events (spurious folds of "// &
+            "an unresolved grid? raise n)", errmsg, status)
+         return
+      end if
       call gap_control(problem, branch, cycle, status, errmsg)
+      if (status == wa_ok .and. cycle%gap%overflow) call fail(wa_not_converged, &
+         "lj gap path: more than 64 events (spurious folds of an unresolved grid? raise n)", &
+         errmsg, status)
    end subroutine lj_paths
 
    !> Quantity q (by_load: P*, by_gap: gbar*) of point i.
@@ -272,7 +283,10 @@ contains
       type(lj_path_type), intent(inout) :: path
       integer, intent(in) :: stage, event, i
       type(lj_branch_type), intent(in) :: branch
-      if (path%n >= max_events) return
+      if (path%n >= max_events) then      ! flagged: the caller fails, never a cut path
+         path%overflow = .true.
+         return
+      end if
       path%n = path%n + 1
       path%stage(path%n) = stage
       path%event(path%n) = event
@@ -517,9 +531,9 @@ contains
             call walk(problem, branch, by_gap, i, dir, path, stage, integral)
             if (i == 1 .or. i == branch%n) exit
             if (jumps > max_path_jumps) then      ! never a W* of a path cut short
-               call fail(wa_not_converged, "lj gap path: too many jumps on the "// &
-                  trim(merge("approach  ", "retraction", stage == lj_stage_approach)), &
-                  errmsg, status)
+               call fail(wa_not_converged, "lj gap path: more than 30 jumps on the "// &
+                  trim(merge("approach  ", "retraction", stage == lj_stage_approach))// &
+                  " (spurious folds of an unresolved grid? raise n)", errmsg, status)
                return
             end if
             if (fold_of(branch, by_gap, i) /= sense) then

@@ -73,6 +73,9 @@ module wa_bem_solver
    !> dense_max_unknowns a state costs O(N) memory, and a branch of a few hundred states
    !> at the cap about 100 MB.
    integer, parameter :: lj_max_unknowns = 8193
+   !> Cap of the unknowns of an uneven profile (whole period, dense factorisation: a few
+   !> matrices of n^2 reals, about 100 MB at the cap)
+   integer, parameter :: dense_uneven_max_unknowns = 2048
    !> Unknowns above which the preconditioner is the two-grid one (measured, at alpha 0.3,
    !> mu 3: the two-grid trace takes 0.5 s at N = 512 against 0.7 s with the dense one)
    integer, parameter :: dense_max_unknowns = 129
@@ -134,7 +137,8 @@ contains
       !> unknowns) and 8192 otherwise; 0 or absent: the automatic grid lj_auto_n(params)
       integer, intent(in), optional :: n
       !> The profile as samples of one period at x* = j/M, j = 0..M-1 (M >= 4), heights in
-      !> units of Delta, resampled by its trigonometric interpolant; an even profile
+      !> units of Delta, resampled by its trigonometric interpolant (an uneven one with n <=
+      !> 2048: it is solved densely on the whole period); an even profile
       !> (y(j) = y(M-j)) is solved on the half period; absent: the sinusoid 1 - cos 2 pi x*
       real(wp), intent(in), optional :: profile(:)
       integer :: np
@@ -165,6 +169,13 @@ contains
             "16384 on an even profile, n <= 8192 otherwise)", status, errmsg)
          return
       end if
+      ! The two-grid preconditioner is validated on the half period of an even profile
+      ! only; an uneven profile is solved with the dense factorisation, within its memory cap.
+      if (.not. problem%grid%even .and. problem%grid%n > dense_uneven_max_unknowns) then
+         call set_error(wa_capacity_too_small, "lj: an uneven profile is solved densely: "// &
+            "n <= 2048 (the dense factorisation's memory cap)", status, errmsg)
+         return
+      end if
       problem%law = lj_law(params%alpha, params%mu)
       call setup_operator(problem)
    end subroutine lj_problem
@@ -178,7 +189,7 @@ contains
       allocate (problem%symbol(0:np - 1))
       call circulant_symbol(kernel_value(np, [(nc, nc = 0, np - 1)]), problem%symbol)
       nc = max(coarse_min, np/max_ratio)
-      if (problem%grid%n > dense_max_unknowns .and. mod(np, nc) == 0) then
+      if (problem%grid%n > dense_max_unknowns .and. mod(np, nc) == 0 .and. problem%grid%even) then
          call use_two_grid(problem, nc)
       else
          allocate (problem%kw(problem%grid%n, problem%grid%n))

@@ -72,26 +72,26 @@ def test_critical(cli, model):
 
 def test_lj_faces_agree(cli, tmp_path):
     """model="lj": the branch, both paths, the critical values with their error columns
-    and a profile with --profile-file are those of the command line (one grid, n = 128)."""
-    common = ["--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "128"]
-    b = wa.trace_branch("lj", 0.3, 3.0, n=128)
+    and a profile with --profile-file are those of the command line (one grid, n = 256)."""
+    common = ["--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "256"]
+    b = wa.trace_branch("lj", 0.3, 3.0, n=256)
     t = table(cli, "branch", *common)
     for k in ("a_star", "b_star", "P_star", "gbar", "h_min", "h_max"):
         np.testing.assert_array_equal(t[k], getattr(b, k))
     np.testing.assert_array_equal(t["stable_gap"], b.stable_gap)
-    c = wa.critical_forces("lj", 0.3, 3.0, n=128)
+    c = wa.critical_forces("lj", 0.3, 3.0, n=256)
     t = table(cli, "critical", *common)
     for k in ("P_fc", "P_pf", "P_fc_err", "P_pf_err"):
         assert t[k][0] == getattr(c, k)
-    for control, path in (("load", wa.load_path("lj", 0.3, 3.0, n=128)),
-                          ("gap", wa.gap_path("lj", 0.3, 3.0, n=128))):
+    for control, path in (("load", wa.load_path("lj", 0.3, 3.0, n=256)),
+                          ("gap", wa.gap_path("lj", 0.3, 3.0, n=256))):
         t = table(cli, "path", "--control", control, *common)
         for k in ("stage", "event", "a_star", "P_star", "gbar"):
             np.testing.assert_array_equal(t[k], getattr(path, k))
     samples = 1 - np.cos(2 * np.pi * (np.arange(48) / 48 + 0.01))
     f = tmp_path / "wave.txt"
     f.write_text("\n".join(repr(float(v)) for v in samples) + "\n")
-    p = wa.profile("lj", 0.3, 3.0, 0.2, n=128, profile=samples)
+    p = wa.profile("lj", 0.3, 3.0, 0.2, n=256, profile=samples)
     t = table(cli, "profile", "--a-star", "0.2", "--profile-file", str(f), *common)
     for k in ("x", "traction", "gap"):
         np.testing.assert_array_equal(t["x_star" if k == "x" else k], getattr(p, k))

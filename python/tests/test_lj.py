@@ -1,6 +1,6 @@
 """model="lj" (the smooth Lennard-Jones model) in trace_branch, load_path, gap_path and
 critical_forces: the values of the Fortran bem suite, the error estimates, n= and
-profile=, and the errors. Small grids (n = 128) except where the automatic grid is the
+profile=, and the errors. Small grids (n = 256) except where the automatic grid is the
 point; each cycle at the automatic grid (N = 512 at alpha 0.3, mu 3) takes about a second.
 """
 import math
@@ -34,22 +34,22 @@ def test_load_path_matches_the_fortran_suite(path_auto):
 
 
 def test_critical_forces_unpacks_with_error_estimates():
-    c = wa.critical_forces("lj", 0.3, [3.0, 2.5], n=128)
+    c = wa.critical_forces("lj", 0.3, [3.0, 2.5], n=256)
     assert isinstance(c, wa.LJCriticalForces)
     p_fc, p_pf = c
-    assert p_fc.shape == (2,) and np.all(c.N == 128) and np.all(c.ok)
-    # n = 128 is resolved at these mu: within the estimate of the reference at N = 512
+    assert p_fc.shape == (2,) and np.all(c.N == 256) and np.all(c.ok)
+    # n = 256 is resolved at these mu: within the estimate of the reference at N = 512
     assert abs(p_fc[0] - P_FC_REF) <= c.P_fc_err[0] + 1e-10
     assert abs(p_pf[0] - P_PF_REF) <= c.P_pf_err[0] + 1e-10
     assert np.all(c.P_fc_err > 0) and np.all(c.W_star_err > 0)
 
 
 def test_critical_forces_errors_nan_names_the_failed_point():
-    c = wa.critical_forces("lj", 0.3, [3.0, 0.0], n=128, errors="nan")
+    c = wa.critical_forces("lj", 0.3, [3.0, 0.0], n=256, errors="nan")
     assert math.isnan(c.P_fc[1]) and c.status[1] == 1
     assert "mu must be > 0" in c.messages[(1,)]
     with pytest.raises(wa.InvalidArgumentError, match="mu must be > 0"):
-        wa.critical_forces("lj", 0.3, 0.0, n=128)
+        wa.critical_forces("lj", 0.3, 0.0, n=256)
 
 
 def test_gap_path_w_star_and_jumps_at_constant_gap():
@@ -68,29 +68,33 @@ def test_gap_path_w_star_and_jumps_at_constant_gap():
 
 
 def test_branch_events_and_stability():
-    b = wa.trace_branch("lj", 0.3, 1.0, n=128)
-    assert isinstance(b, wa.LJBranch) and b.N == 128
+    b = wa.trace_branch("lj", 0.3, 1.0, n=256)
+    assert isinstance(b, wa.LJBranch) and b.N == 256
     assert b.event[0] == 8 and b.event[-1] == 8 and b.a_star[-1] == 0.5
     assert np.all(b.a_star <= b.b_star) and np.all(b.h_min <= b.gbar)
     # far apart: stable under gap control, not under load control (the attraction decays)
     assert b.stable_gap[0] and not b.stable[0]
     # the paths on this curve, with the estimates of the cycle at N/2 (as load_path's)
-    p = wa.load_path("lj", 0.3, 1.0, n=128)
+    p = wa.load_path("lj", 0.3, 1.0, n=256)
     assert (b.P_fc, b.P_pf, b.P_fc_err, b.P_pf_err) == (p.P_fc, p.P_pf, p.P_fc_err,
                                                         p.P_pf_err)
-    assert b.W_star == wa.gap_path("lj", 0.3, 1.0, n=128).W_star
+    assert b.W_star == wa.gap_path("lj", 0.3, 1.0, n=256).W_star
 
 
 def test_profile_samples_of_the_sinusoid_and_a_shifted_wave():
     """The samples of 1 - cos(2 pi x) give the default; the same wave shifted by a third
     of a grid step (an uneven profile: solved on the whole period, not the half) gives the
-    same critical loads, to the error estimate."""
-    base = wa.critical_forces("lj", 0.3, 3.0, n=128)
+    same critical loads, to the error estimate. (N = 256: at N = 128 the interaction zone
+    is unresolved, and the spurious folds of the uneven grid exceed the path's jump cap,
+    which the library reports instead of returning a cut path.)"""
+    base = wa.critical_forces("lj", 0.3, 3.0, n=256)
     x = np.arange(64) / 64
-    same = wa.critical_forces("lj", 0.3, 3.0, n=128, profile=1 - np.cos(2 * np.pi * x))
+    same = wa.critical_forces("lj", 0.3, 3.0, n=256, profile=1 - np.cos(2 * np.pi * x))
     assert same.P_fc == pytest.approx(base.P_fc, abs=1e-11)
     assert same.P_pf == pytest.approx(base.P_pf, abs=1e-11)
-    shifted = wa.critical_forces("lj", 0.3, 3.0, n=128,
+    with pytest.raises(wa.ConvergenceError, match="raise n"):
+        wa.critical_forces("lj", 0.3, 3.0, n=128, profile=1 - np.cos(2 * np.pi * (x + 1 / 192)))
+    shifted = wa.critical_forces("lj", 0.3, 3.0, n=256,
                                  profile=1 - np.cos(2 * np.pi * (x + 1 / 192)))
     assert abs(shifted.P_fc - base.P_fc) <= base.P_fc_err + shifted.P_fc_err + 1e-9
     assert abs(shifted.P_pf - base.P_pf) <= base.P_pf_err + shifted.P_pf_err + 1e-9
@@ -99,7 +103,7 @@ def test_profile_samples_of_the_sinusoid_and_a_shifted_wave():
 def test_to_si_carries_the_error_estimates():
     params = wa.Params.from_dimensional(Estar=1e9, period=1e-4, amplitude=1e-6,
                                         work_of_adhesion=0.05, peak_stress=3e6)
-    p = wa.load_path("lj", params.alpha, params.mu, n=128)
+    p = wa.load_path("lj", params.alpha, params.mu, n=256)
     si = p.to_si(params)
     assert si.units["P_fc_err"] == "Pa"
     assert si.P_fc_err == pytest.approx(p.P_fc_err * params.scales.pressure)

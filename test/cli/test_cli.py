@@ -1044,7 +1044,7 @@ def test_lj_path_load_events_and_header(cli):
 
 
 def test_lj_branch_columns_and_stability(cli):
-    res = run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "128",
+    res = run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "256",
               "--format", "csv")
     table = rows(res.stdout)
     assert list(table[0].keys()) == ["a_star", "b_star", "P_star", "stable", "stable_gap",
@@ -1062,7 +1062,7 @@ def test_lj_profile_file_of_the_sinusoid_gives_the_default(cli, tmp_path):
     x = np.arange(64) / 64
     f.write_text("# one period, heights over Delta\n" +
                  "\n".join(repr(float(v)) for v in 1 - np.cos(2 * np.pi * x)) + "\n")
-    base = ["critical", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "128",
+    base = ["critical", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n", "256",
             "--format", "csv"]
     a = rows(run(cli, *base).stdout)[0]
     b = rows(run(cli, *base, "--profile-file", str(f)).stdout)[0]
@@ -1110,9 +1110,9 @@ def test_lj_bad_profile_line_exits_2(cli, tmp_path):
 
 def test_lj_branch_header_carries_the_critical_values_with_errors(cli):
     doc = json.loads(run(cli, "branch", "--model", "lj", "--alpha", "0.3", "--mu", "3", "--n",
-                         "128", "--format", "json").stdout)
+                         "256", "--format", "json").stdout)
     v = doc["values"]
-    assert v["N"] == 128
+    assert v["N"] == 256
     assert abs(v["P_fc"] - LJ_P_FC_REF) <= v["P_fc_err"] + 1e-10
     assert abs(v["P_pf"] - LJ_P_PF_REF) <= v["P_pf_err"] + 1e-10
     # the cycle at N/2 = 4 cannot be computed: the estimates are NaN, the curve is written
