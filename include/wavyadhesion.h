@@ -44,6 +44,10 @@ extern "C" {
 #define WA_MODEL_JKR 1
 #define WA_MODEL_DW 2
 #define WA_MODEL_MD 3
+/* The smooth (Lennard-Jones) model: the code of the command line's `--model lj`; its
+   functions are wa_lj_cycle and wa_lj_trace (the functions taking a model argument accept
+   0-3 only). */
+#define WA_MODEL_LJ 4
 
 /* The supported parameter domain (alpha_min, alpha_max, mu_min, mu_max in the Fortran
    module wa_params): alpha in [WA_ALPHA_MIN, WA_ALPHA_MAX], mu = 0 or in
@@ -324,6 +328,35 @@ int wa_gap_law(int model, double alpha, double mu, int n, const double *gbar,
    Never WA_CAPACITY_TOO_SMALL. */
 int wa_gap_critical(int model, double alpha, double mu, double *values, char *message,
                     int message_capacity);
+
+/* Smooth adhesion (the self-consistent Lennard-Jones 3-9 law, doc/theory.md "Smooth
+   adhesion"): the same work of adhesion as DW/MD at (alpha, mu), mu > 0, and the range
+   eps = the MD opening, eps/Delta = (4 alpha^4)^(1/3)/mu. n is the grid points per period
+   (0: automatic); profile NULL is the sinusoid 1 - cos 2 pi x*, else n_profile >= 4
+   heights over Delta at x* = j/n_profile (n_profile is ignored when profile is NULL).
+   A grid cap exceeded (automatic grid > 2048, n > 16384 / 8192 / 2048 uneven) is
+   WA_INVALID_ARGUMENT. */
+
+/* The load- and gap-controlled cycle: P_fc*, P_pf*, the snap load (the last jump on
+   loading) and W* (over p* Delta), with errors[4] (NULL allowed) = |value at N - value
+   at N/2| of the same four and *n_used (NULL allowed) = N. n: 0 or a multiple of 4,
+   >= 16 (N/2 is solved too). On any failure the four values and errors are NaN and
+   *n_used = 0 (each one not NULL). Never WA_CAPACITY_TOO_SMALL. */
+int wa_lj_cycle(double alpha, double mu, int n, int n_profile, const double *profile,
+                double *P_fc, double *P_pf, double *P_snap, double *W_star,
+                double *errors, int *n_used, char *message, int message_capacity);
+
+/* The equilibrium curve from far apart to full contact: P*, gbar* (over Delta), a*, b*
+   of each point, and (each NULL allowed) its stability under load and gap control (1/0)
+   and event code (0 none, 1 fold of P*, 14 fold of gbar*, 5 a* reaches or leaves 1/2,
+   15 contact made or lost, 8 first and last point); *n_used (NULL allowed) = N. n: 0 or
+   even, >= 8. When *n_points exceeds capacity the first capacity points are written and
+   WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL arrays asks for the count);
+   on any other failure *n_points = *n_used = 0 and the arrays are not written. */
+int wa_lj_trace(double alpha, double mu, int n, int n_profile, const double *profile,
+                int capacity, double *P_star, double *gbar, double *a_star,
+                double *b_star, int *stable_load, int *stable_gap, int *event,
+                int *n_points, int *n_used, char *message, int message_capacity);
 
 /* 0.2 compatibility: removed in 0.4 */
 /* The 0.2 names besides the functions above, each the function above with the 0.2

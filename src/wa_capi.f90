@@ -3,7 +3,8 @@
 !> The C interface (doc/c-api.md), part 1: the closed-form loads, states (equilibrium,
 !> roots), the branch, load control (critical forces, load path, sweep), profiles, the
 !> status texts and the version. Gap control is in wa_capi_gap, the adhesion map in
-!> wa_capi_map, the 0.2 names in wa_capi_compat; the declarations in include/wavyadhesion.h.
+!> wa_capi_map, smooth adhesion in wa_capi_lj, the 0.2 names in wa_capi_compat; the
+!> declarations in include/wavyadhesion.h.
 !>
 !> One function per capability: optional outputs (the mean gap gbar, a sweep's row
 !> statuses) are pointers that may be NULL, and every function taking pointers ends with

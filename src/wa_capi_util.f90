@@ -1,7 +1,7 @@
 !> display: none
 !>
 !> Marshalling for the C interface (modules wa_capi, wa_capi_gap, wa_capi_map,
-!> wa_capi_compat): the message copy, failure values written through C pointers, arrays
+!> wa_capi_lj, wa_capi_compat): the message copy, failure values written through C pointers, arrays
 !> copied to the caller, and the checks of counts, capacities and NULL pointers that every
 !> export shares. Nothing here is exported to C.
 module wa_capi_util

@@ -54,6 +54,8 @@ def test_header_constants_equal_fortran(repo):
         assert c[name] == status[name], name
     for name in ("westergaard", "jkr", "dw", "md"):
         assert c["wa_model_" + name] == state["model_" + name] == wa.MODELS[name]
+    cli = _fortran_constants((repo / "app" / "wa_cli_options.f90").read_text())
+    assert c["wa_model_lj"] == cli["model_lj"]     # the code of the CLI's --model lj
     for c_name, f_name in (("wa_zone_inside", "zone_inside"),
                            ("wa_zone_whole_period", "zone_whole_period"),
                            ("wa_zone_full_contact", "zone_full_contact")):

@@ -1509,6 +1509,82 @@ static void test_compat_forwards(void) {
    }
 }
 
+/* Smooth adhesion: the cycle against the converged reference values (within the
+   returned N vs N/2 estimates), NULL optional outputs give the same values, the trace's
+   counts, capacity and options, and the documented failures. */
+static void test_lj(void) {
+   double fc, pf, snap, w, err[4], fc2, pf2, snap2, w2, sin_prof[32];
+   int st, n_used = -1, i, n_pts = -1, n_pts2 = -1, n_used_t = -1;
+   char msg[256];
+   enum { cap = 4000 };
+   static double ps[cap], gb[cap], as[cap], bs[cap], ps2[cap], gb2[cap], as2[cap], bs2[cap];
+   static int sl[cap], sg[cap], ev[cap];
+   strcpy(msg, "x");
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, err, &n_used, msg, 256);
+   CHECK(st == WA_OK && msg[0] == '\0', "lj_cycle status %d message '%s'", st, msg);
+   CHECK(fabs(fc - 0.99600001838) <= err[0] + 1e-9, "lj P_fc %.12g err %g", fc, err[0]);
+   CHECK(fabs(pf + 0.40595099926) <= err[1] + 1e-9, "lj P_pf %.12g err %g", pf, err[1]);
+   CHECK(n_used >= 16 && n_used % 4 == 0, "lj n_used %d", n_used);
+   CHECK(w > 0 && isfinite(snap) && err[2] >= 0 && err[3] >= 0, "lj W* %g snap %g", w, snap);
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc2, &pf2, &snap2, &w2, NULL, NULL, NULL, 0);
+   CHECK(st == WA_OK && fc2 == fc && pf2 == pf && snap2 == snap && w2 == w,
+         "lj_cycle with NULL optionals differs");
+
+   /* failures: each names its argument; the outputs are NaN, n_used 0 */
+   st = wa_lj_cycle(0.3, 3.0, 250, 0, NULL, &fc, &pf, &snap, &w, err, &n_used, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n = 250") && isnan(fc) && isnan(err[3]) &&
+            n_used == 0, "lj_cycle n = 250: %d '%s'", st, msg);
+   st = wa_lj_cycle(0.3, 3.0, 8, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n = 8"), "lj_cycle n = 8: '%s'", msg);
+   for (i = 0; i < 32; i++) sin_prof[i] = 1.0 - cos(2.0 * pi * i / 32.0);
+   st = wa_lj_cycle(0.3, 3.0, 0, 3, sin_prof, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n_profile = 3"), "lj n_profile: '%s'", msg);
+   st = wa_lj_cycle(0.3, 0.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu"), "lj mu = 0: '%s'", msg);
+   st = wa_lj_cycle(NAN, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "alpha"), "lj alpha NaN: '%s'", msg);
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, NULL, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "P_pf") && isnan(fc), "lj NULL: '%s'", msg);
+   st = wa_lj_cycle(0.3, 3.0, 20000, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && isnan(fc), "lj n = 20000: %d '%s'", st, msg);
+
+   /* the trace at n = 256, the sinusoid given as samples = NULL, counts and capacity */
+   st = wa_lj_trace(0.3, 3.0, 256, 0, NULL, cap, ps, gb, as, bs, sl, sg, ev, &n_pts,
+                    &n_used_t, msg, 256);
+   CHECK(st == WA_OK && msg[0] == '\0' && n_pts > 10 && n_used_t == 256,
+         "lj_trace %d n %d N %d '%s'", st, n_pts, n_used_t, msg);
+   if (st != WA_OK) return;
+   CHECK(ev[0] == 8 && ev[n_pts - 1] == 8 && sl[n_pts - 1] == 1 && sg[n_pts - 1] == 1 &&
+            fabs(as[n_pts - 1] - 0.5) < 1e-12 && as[0] >= 0 && gb[0] > gb[n_pts - 1],
+         "lj_trace ends");
+   for (i = 1, st = 0; i < n_pts - 1; i++) st += ev[i] == 1;
+   CHECK(st >= 2, "lj_trace has %d folds of P*", st);
+   st = wa_lj_trace(0.3, 3.0, 256, 32, sin_prof, cap, ps2, gb2, as2, bs2, NULL, NULL, NULL,
+                    &n_pts2, NULL, msg, 256);
+   /* the samples of the sinusoid give the same far-apart start (the interpolant is exact) */
+   CHECK(st == WA_OK && n_pts2 > 10 && fabs(ps2[0] - ps[0]) < 1e-9 &&
+            fabs(gb2[0] - gb[0]) < 1e-9 * gb[0] && fabs(as2[n_pts2 - 1] - 0.5) < 1e-12,
+         "lj_trace with sampled sinusoid %d: %d points", st, n_pts2);
+   st = wa_lj_trace(0.3, 3.0, 256, 0, NULL, 5, ps2, gb2, as2, bs2, NULL, NULL, NULL, &n_pts2,
+                    NULL, msg, 256);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n_pts2 == n_pts && same_d(ps2, ps, 5) &&
+            same_d(bs2, bs, 5) && strstr(msg, "capacity = 5"),
+         "lj_trace capacity 5: %d %d '%s'", st, n_pts2, msg);
+   st = wa_lj_trace(0.3, 3.0, 256, 0, NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
+                    &n_pts2, NULL, msg, 256);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n_pts2 == n_pts, "lj_trace count query %d", st);
+   st = wa_lj_trace(0.3, 3.0, 255, 0, NULL, cap, ps2, gb2, as2, bs2, NULL, NULL, NULL,
+                    &n_pts2, &n_used_t, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n") && n_pts2 == 0 && n_used_t == 0,
+         "lj_trace n odd: '%s'", msg);
+   st = wa_lj_trace(0.3, 3.0, 256, 0, NULL, cap, ps2, NULL, as2, bs2, NULL, NULL, NULL,
+                    &n_pts2, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "gbar"), "lj_trace NULL gbar: '%s'", msg);
+   st = wa_lj_trace(0.3, 3.0, 256, 0, NULL, cap, ps2, gb2, as2, bs2, NULL, NULL, NULL, NULL,
+                    NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n_points"), "lj_trace NULL n_points");
+}
+
 int main(void) {
    test_version();
    test_closed_forms();
@@ -1541,6 +1617,7 @@ int main(void) {
    test_gap_law_message_on_ok();
    test_gap_critical();
    test_compat_forwards();
+   test_lj();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }
