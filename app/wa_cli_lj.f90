@@ -10,7 +10,7 @@ module wa_cli_lj
    use wa_text, only: int_text
    use wavyadhesion, only: params_type, new_params, lj_problem_type, lj_problem, lj_branch_type, &
       lj_trace, lj_cycle_type, lj_cycle, lj_paths, lj_path_type, lj_profile, status_message, wa_ok, &
-      wa_invalid_argument
+      wa_invalid_argument, lj_nearest_state
    use wa_cli_options, only: cli_options, given, option_message
    use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
    use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_end
@@ -405,7 +405,7 @@ contains
       type(lj_branch_type) :: b
       real(wp), allocatable :: samples(:), x(:), gap(:), sigma(:)
       character(len=256) :: msg
-      real(wp) :: a_target, miss
+      real(wp) :: a_target
       integer :: i, k, n, np, status
       logical :: any_stable
 
@@ -419,16 +419,8 @@ contains
       msg = ""
       call lj_trace(problem, b, status, msg)
       call check(tab, status, msg)
-      any_stable = any(b%stable_load(1:b%n))
-      k = 0
-      miss = huge(1.0_wp)
-      do i = 1, b%n
-         if (any_stable .and. .not. b%stable_load(i)) cycle
-         if (abs(b%a_star(i) - a_target) < miss) then
-            miss = abs(b%a_star(i) - a_target)
-            k = i
-         end if
-      end do
+      call lj_nearest_state(b, a_target, k, status, msg, any_stable)
+      call check(tab, status, msg)
       np = b%n_period
       allocate (x(np), gap(np), sigma(np))
       call lj_profile(problem, b%z(:, k), x, gap, sigma)

@@ -158,6 +158,8 @@
 !>   [[wa_bem_path:lj_path_full_contact_reached]], [[wa_bem_path:lj_path_full_contact_left]],
 !>   [[wa_bem_path:lj_path_pull_off]]: the stages and events of a path.
 !> - [[lj_profile]]: the gap and traction of one state over the period.
+!> - [[lj_nearest_state]]: the traced state with a* nearest a target (among the load-stable
+!>   states when there are any), the state a profile draws.
 !> - [[lj_rigid_pull_off]]: the rigid-limit pull-off in closed form.
 !>
 !> ### Status and version
@@ -215,7 +217,8 @@ module wavyadhesion
       lj_profile, lj_stage_loading, &
       lj_stage_unloading, lj_stage_approach, lj_stage_retraction, lj_path_jump_start, &
       lj_path_jump_end, lj_path_full_contact_reached, lj_path_full_contact_left, lj_path_pull_off
-   use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, lj_event_none, &
+   use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, lj_nearest_state, &
+      lj_event_none, &
       lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
    implicit none
    private
@@ -267,7 +270,8 @@ module wavyadhesion
       lj_profile, lj_stage_loading, &
       lj_stage_unloading, lj_stage_approach, lj_stage_retraction, lj_path_jump_start, &
       lj_path_jump_end, lj_path_full_contact_reached, lj_path_full_contact_left, lj_path_pull_off
-   public :: lj_problem_type, lj_branch_type, lj_trace_options, lj_trace, lj_event_none, &
+   public :: lj_problem_type, lj_branch_type, lj_trace_options, lj_trace, lj_nearest_state, &
+      lj_event_none, &
       lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
 
 end module wavyadhesion

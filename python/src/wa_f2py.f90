@@ -1189,7 +1189,7 @@ subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_targ
    use wa_status, only: wa_ok, wa_capacity_too_small, wa_invalid_argument
    use wa_params, only: params_type, new_params
    use wa_bem_solver, only: lj_problem_type, lj_problem
-   use wa_bem_trace, only: lj_branch_type, lj_trace
+   use wa_bem_trace, only: lj_branch_type, lj_trace, lj_nearest_state
    use wa_bem_path, only: lj_profile
    implicit none
    !> Length of the output arrays, >= 1
@@ -1223,9 +1223,7 @@ subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_targ
    type(lj_problem_type) :: problem
    type(lj_branch_type) :: b
    real(c_double), allocatable :: xs(:), hs(:), ss(:)
-   real(c_double) :: miss
    integer :: i, k, j, np, stat
-   logical :: any_stable
 
    message = ""
    x = 0; traction = 0; gap = 0; n_period = 0; state = 0
@@ -1242,16 +1240,9 @@ subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_targ
    end if
    if (stat == wa_ok) call lj_trace(problem, b, stat, message)
    if (stat == wa_ok) then
-      any_stable = any(b%stable_load(1:b%n))
-      k = 1
-      miss = huge(1.0_c_double)
-      do i = 1, b%n
-         if (any_stable .and. .not. b%stable_load(i)) cycle
-         if (abs(b%a_star(i) - a_target) < miss) then
-            miss = abs(b%a_star(i) - a_target)
-            k = i
-         end if
-      end do
+      call lj_nearest_state(b, a_target, k, stat, message)
+   end if
+   if (stat == wa_ok) then
       np = b%n_period
       n_period = int(np, c_int)
       state = [b%a_star(k), b%b_star(k), b%p_star(k), b%gbar(k)]
