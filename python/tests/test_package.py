@@ -13,7 +13,7 @@ import wavyadhesion
 from wavyadhesion import _errors, _wa_f2py as _f
 
 MODULES = ["_args", "_branch", "_energy", "_equilibrium", "_errors", "_gap", "_gapcritical",
-           "_lj", "_loadpath", "_map", "_parallel", "_params", "_profile", "_results", "plotting"]
+           "_lj", "_loadpath", "_map", "_model_error", "_parallel", "_params", "_profile", "_results", "plotting"]
 
 
 def test_public_names():

@@ -48,6 +48,7 @@ from ._gap import GAP_EVENTS, GAP_STAGES, GapLaw, GapPath, gap_law, gap_path
 from ._results import SIValues
 from ._lj import (LJ_EVENTS, LJ_PATH_EVENTS, LJBranch, LJBranchEvent, LJCriticalForces,
                   LJGapPath, LJLoadPath)
+from ._model_error import CELL_STATUSES, QUANTITIES, ModelErrorMap, model_error_map
 
 # The version of the installed distribution, which meson-python takes from the file
 # VERSION at the repository root (python/meson.build), the one source of the number.
@@ -57,6 +58,10 @@ __version__ = _dist_version("wavyadhesion")
 del _dist_version
 
 __all__ = [
+    "CELL_STATUSES",
+    "QUANTITIES",
+    "ModelErrorMap",
+    "model_error_map",
     "LJ_EVENTS",
     "LJ_PATH_EVENTS",
     "LJBranch",

@@ -123,6 +123,17 @@ GAP_PF_DW = ("dw", "3.2953421004685887e-05", "843.70633645969394")
 GAP_FLOOR_MD = ("md", "0.0060257438729055621", "1.406552182111195")
 
 
+@functools.lru_cache(maxsize=None)
+def model_error_cells():
+    """The four cells of the model-error map quoted in doc/user-guide.md (about 3 s)."""
+    import wavyadhesion as wa
+    return wa.model_error_map([0.1, 3.0], [0.3, 3.0])
+
+
+def model_error(model, q, i, j):
+    return model_error_cells().rel_error[model, q][i, j]
+
+
 # (file, quoted text with {} for the number, function giving the number as it is quoted)
 CLAIMS = [
     ("doc/c-api.md", "α = 0.3, μ = 5 ({} points)", lambda: branch_points("dw", "0.3", "5")),
@@ -147,6 +158,17 @@ CLAIMS = [
     ("doc/user-guide.md", "and W* = {} (error", lambda: sci(gap_w_star("lj", "0.3", "3"), 4)),
     ("doc/user-guide.md", "(error estimate {}) in units of p*Δ",
      lambda: f"{lj_value('W_star_err', '--control', 'gap'):.1e}".replace("e-07", "e-7")),
+    ("doc/user-guide.md", "P_pf is within {} (DW)", lambda: f"{model_error('dw', 'P_pf', 0, 1):.1%}"),
+    ("doc/user-guide.md", "and\n  {} (MD) of LJ", lambda: f"{model_error('md', 'P_pf', 0, 1):.1%}"),
+    ("doc/user-guide.md", "P_fc is off by {} (DW)", lambda: f"{model_error('dw', 'P_fc', 0, 1):.0%}"),
+    ("doc/user-guide.md", "W* is {} times LJ's", lambda: f"{1 + model_error('dw', 'W_star', 0, 1):.1f}"),
+    ("doc/user-guide.md", "DW's P_pf is off by {},", lambda: f"{model_error('dw', 'P_pf', 1, 0):.0%}"),
+    ("doc/user-guide.md", "MD's by only {}, so", lambda: f"{model_error('md', 'P_pf', 1, 0):.1%}"),
+    ("doc/user-guide.md", "gap is within the range ε, is {} there",
+     lambda: f"{model_error_cells().lj['P_fc'][1, 1]:.2f}"),
+    ("doc/user-guide.md", "relative error is infinite (marked inf), e.g. at μ = 0.3 for α = 0.1{}",
+     lambda: "" if all(model_error(m, "W_star", i, 0) == float("inf") for m in ("dw", "md")
+                       for i in (0, 1)) else " (no longer true)"),
     ("doc/theory.md", "against P_pf = {}", lambda: sci(critical(*GAP_PF_DW)[1], 5)),
     ("doc/theory.md", "P_min is now {})", lambda: sci(gap_critical_value(*GAP_PF_DW, "P_min"), 5)),
     ("doc/theory.md", "1.68596e-6, now {}).", lambda: sci(gap_w_star(*GAP_FLOOR_MD), 6)),

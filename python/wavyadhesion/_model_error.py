@@ -1,0 +1,258 @@
+"""The model-error map: how far the cohesive-zone models (DW, MD) are from the smooth
+Lennard-Jones model (``model="lj"``) in P_fc, P_pf and W*, over a grid of (alpha, mu)
+(:func:`model_error_map`).
+
+Every cell is one LJ cycle (:func:`critical_forces` with ``model="lj"``: the three values
+and their discretisation-error estimates |value at N - value at N/2|) and the cohesive
+models' values (:func:`critical_forces` and :func:`energy_lost`, the existing vectorised
+sweeps, on the same executor). A cell whose LJ grid would exceed the solver's cap (the
+automatic grid refuses an interaction zone finer than 12 points at N = 2048; status
+"invalid argument" or "output capacity too small") is *unresolved*: its values are NaN,
+never extrapolated.
+"""
+
+from __future__ import annotations
+
+from concurrent.futures import Executor
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ._args import count_in, float_array, model_code, model_name, C_INT_MAX
+from ._energy import energy_lost
+from ._errors import CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError
+from ._loadpath import critical_forces
+from ._parallel import iter_chunks, make_progress
+
+__all__ = ["QUANTITIES", "CELL_STATUSES", "ModelErrorMap", "model_error_map"]
+
+#: The compared quantities: full-contact load, pull-off load, energy lost per gap cycle.
+QUANTITIES = ("P_fc", "P_pf", "W_star")
+#: Per-cell statuses.
+CELL_STATUSES = ("ok", "unresolved", "failed")
+
+# An LJ error estimate counts as small against the model error when it is below this
+# fraction of |model - LJ| ...
+_RESOLVED_FRACTION = 0.1
+# ... or below this fraction of |LJ| (a tenth of the 1 % contour: the cell then lies on the
+# right side of every contour drawn, even where the two models agree to better than that).
+_RESOLVED_RELATIVE = 1e-3
+# Values at most this large (units p* or p* Delta; the smallest work of adhesion on the
+# issue's range is pi 0.01^2/2 ~ 1.6e-4) count as zero: W* = 0 where a cycle has no jump
+# comes out as rounding (~1e-17).
+_ZERO = 1e-12
+# LJ statuses that mean "the grid cap": the automatic grid refuses the zone (invalid
+# argument, naming --n) or the requested grid is beyond the capacity.
+_UNRESOLVED = (INVALID_ARGUMENT, CAPACITY_TOO_SMALL)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class ModelErrorMap:
+    """The relative error of the cohesive-zone models against LJ over an (alpha, mu) grid
+    (:func:`model_error_map`). Every array has shape (n_alpha, n_mu).
+
+    Attributes
+    ----------
+    alpha, mu : numpy.ndarray of float
+        The grid axes (1-D).
+    models : tuple of str
+        The compared models ("dw", "md").
+    lj, lj_err : dict of str -> numpy.ndarray
+        LJ's P_fc, P_pf, W_star and their discretisation-error estimates, by quantity
+        (NaN where the cell is not "ok" for LJ).
+    lj_N : numpy.ndarray of int
+        LJ grid points per period (0 where the cycle failed).
+    lj_status : numpy.ndarray of str
+        "ok", "unresolved" (beyond the grid cap) or "failed" (another error).
+    values : dict of (model, quantity) -> numpy.ndarray
+        The model's value.
+    rel_error : dict of (model, quantity) -> numpy.ndarray
+        |model - LJ| / |LJ| (NaN where the cell's status is not "ok"). Where LJ's value is
+        zero (|LJ| <= max(its error estimate, 1e-12): W* of a cycle without a jump) it is 0
+        if the model's is zero too and inf if not (a difference in kind, e.g. a jump, and
+        so hysteresis, in one model only).
+    resolved : dict of (model, quantity) -> numpy.ndarray of bool
+        True where LJ's error estimate is small against the model error:
+        lj_err <= 0.1 |model - LJ| (rel_error known to 10 %), or lj_err <= 1e-3 |LJ|
+        (below a tenth of the 1 % contour), or both values zero. False where the
+        status is not "ok". With an explicit ``n`` a zone too fine for the grid is not
+        refused: its cells show up here (a large estimate) or as "failed".
+    status : dict of str -> numpy.ndarray of str
+        Per model: "unresolved" where LJ is, "failed" where LJ or the model failed,
+        else "ok".
+    messages : dict of (source, i, j) -> str
+        The message of every failed or unresolved cell (source "lj" or the model name).
+    """
+
+    alpha: np.ndarray
+    mu: np.ndarray
+    models: Tuple[str, ...]
+    lj: Dict[str, np.ndarray]
+    lj_err: Dict[str, np.ndarray]
+    lj_N: np.ndarray
+    lj_status: np.ndarray
+    values: Dict[Tuple[str, str], np.ndarray]
+    rel_error: Dict[Tuple[str, str], np.ndarray]
+    resolved: Dict[Tuple[str, str], np.ndarray]
+    status: Dict[str, np.ndarray]
+    messages: Dict[Tuple[str, int, int], str] = field(default_factory=dict)
+
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """(n_alpha, n_mu)."""
+        return (self.alpha.size, self.mu.size)
+
+    def __repr__(self) -> str:
+        counts = {s: int((self.lj_status == s).sum()) for s in CELL_STATUSES}
+        return (f"ModelErrorMap(shape={self.shape}, models={self.models}, "
+                f"alpha=[{self.alpha.min():.3g}, {self.alpha.max():.3g}], "
+                f"mu=[{self.mu.min():.3g}, {self.mu.max():.3g}], lj_status={counts})")
+
+    def to_dataframe(self):
+        """A pandas table, one row per (alpha, mu, model, quantity): columns alpha, mu,
+        model, quantity, lj, lj_err, lj_N, value, rel_error, resolved, status."""
+        import pandas as pd
+
+        a, m = np.meshgrid(self.alpha, self.mu, indexing="ij")
+        frames = []
+        for model in self.models:
+            for q in QUANTITIES:
+                frames.append(pd.DataFrame({
+                    "alpha": a.ravel(), "mu": m.ravel(), "model": model, "quantity": q,
+                    "lj": self.lj[q].ravel(), "lj_err": self.lj_err[q].ravel(),
+                    "lj_N": self.lj_N.ravel(), "value": self.values[model, q].ravel(),
+                    "rel_error": self.rel_error[model, q].ravel(),
+                    "resolved": self.resolved[model, q].ravel(),
+                    "status": self.status[model].ravel()}))
+        return pd.concat(frames, ignore_index=True)
+
+
+def _lj_cell(task):
+    """Worker (module level: picklable for processes, dask, MPI): one LJ cycle as
+    (values, errors, N, status, message)."""
+    alpha, mu, n = task
+    r = critical_forces("lj", alpha, mu, n=n, errors="nan")
+    values = np.array([float(r.P_fc), float(r.P_pf), float(r.W_star)])
+    errors = np.array([float(r.P_fc_err), float(r.P_pf_err), float(r.W_star_err)])
+    message = r.messages.get((), "")
+    return values, errors, int(r.N), int(r.status), message
+
+
+def _axis(x, name: str) -> np.ndarray:
+    arr = np.atleast_1d(float_array(x, name)).astype(np.float64)
+    if arr.ndim != 1 or arr.size == 0:
+        raise InvalidArgumentError(f"{name} must be a non-empty 1-D array (a grid axis), "
+                                   f"got shape {arr.shape}", INVALID_ARGUMENT)
+    if not (np.isfinite(arr).all() and (arr > 0).all()):
+        raise InvalidArgumentError(f"{name} must hold finite values > 0", INVALID_ARGUMENT)
+    return arr
+
+
+def model_error_map(alpha: ArrayLike, mu: ArrayLike, *, models: Sequence[str] = ("dw", "md"),
+                    n: Optional[int] = None, executor: Optional[Executor] = None,
+                    progress: Union[bool, Callable[[int, int], Any], None] = False
+                    ) -> ModelErrorMap:
+    """The relative error of DW's and MD's P_fc, P_pf and W* against the smooth LJ model,
+    |model - LJ|/|LJ|, at every cell of the grid alpha x mu, with LJ's error estimates.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Grid axis of Johnson's parameter (1-D, > 0).
+    mu : array_like
+        Grid axis of the transition parameter (1-D, > 0).
+    models : sequence of str, optional
+        The models compared with LJ (default "dw", "md"; any of :data:`MODELS`).
+    n : int, optional
+        LJ grid points per period (even, >= 8); None (default): automatic, refused (the
+        cell unresolved) where the interaction zone needs more than the cap.
+    executor : concurrent.futures.Executor, optional
+        Runs the LJ cells (one task each, about a second at the automatic grid) and the
+        cohesive models' sweeps (:func:`critical_forces`, :func:`energy_lost`) in
+        parallel: a ``ThreadPoolExecutor``, a ``ProcessPoolExecutor``, a dask.distributed
+        ``client.get_executor()``. None (default): serially.
+    progress : bool or callable, optional
+        True: a progress bar over the LJ cells; a callable ``fn(done, total)``.
+
+    Returns
+    -------
+    ModelErrorMap
+        Arrays of shape (len(alpha), len(mu)): ``rel_error[model, quantity]``,
+        ``lj_err[quantity]``, ``resolved[model, quantity]``, ``status[model]`` ("ok",
+        "unresolved", "failed"); ``to_dataframe()`` gives the long table.
+
+    Raises
+    ------
+    InvalidArgumentError
+        An axis that is not 1-D, empty, non-finite or not positive; an unknown model; a
+        bad ``n``. A cell's failure is never raised: it is recorded in ``status`` and
+        ``messages``.
+
+    Examples
+    --------
+    >>> m = model_error_map([0.3], [3.0], models=("dw",), n=256)
+    >>> m.rel_error["dw", "P_pf"].shape, str(m.status["dw"][0, 0])
+    ((1, 1), 'ok')
+    """
+    a_ax, m_ax = _axis(alpha, "alpha"), _axis(mu, "mu")
+    names = tuple(model_name(model_code(m)) for m in models)
+    if n is not None:
+        n = count_in(n, "n", 1, C_INT_MAX)
+    shape = (a_ax.size, m_ax.size)
+    A, M = np.meshgrid(a_ax, m_ax, indexing="ij")
+    tasks = [(float(a), float(m), n) for a, m in zip(A.ravel(), M.ravel())]
+
+    lj_v = np.full((A.size, 3), np.nan)
+    lj_e = np.full((A.size, 3), np.nan)
+    lj_N = np.zeros(A.size, dtype=np.int64)
+    lj_status = np.full(A.size, "ok", dtype=object)
+    messages: Dict[Tuple[str, int, int], str] = {}
+    report = make_progress(progress, A.size, "model_error_map (lj)")
+    try:
+        for k, (v, e, n_used, stat, text) in enumerate(iter_chunks(_lj_cell, tasks, executor)):
+            i, j = np.unravel_index(k, shape)
+            if stat == OK:
+                lj_v[k], lj_e[k], lj_N[k] = v, e, n_used
+            else:
+                lj_status[k] = "unresolved" if stat in _UNRESOLVED else "failed"
+                messages["lj", int(i), int(j)] = text
+            if report is not None:
+                report.update(1)
+    finally:
+        if report is not None:
+            report.close()
+    lj_status = lj_status.reshape(shape).astype(str)
+    lj = {q: lj_v[:, c].reshape(shape) for c, q in enumerate(QUANTITIES)}
+    lj_err = {q: lj_e[:, c].reshape(shape) for c, q in enumerate(QUANTITIES)}
+
+    values, rel_error, resolved, status = {}, {}, {}, {}
+    for model in names:
+        cf = critical_forces(model, A, M, errors="nan", executor=executor)
+        el = energy_lost(model, A, M, errors="nan", executor=executor)
+        model_ok = (np.asarray(cf.status) == OK) & (np.asarray(el.status) == OK)
+        for key, text in list(cf.messages.items()) + list(el.messages.items()):
+            messages[model, int(key[0]), int(key[1])] = text
+        st = np.where(lj_status == "ok", np.where(model_ok, "ok", "failed"), lj_status)
+        status[model] = st.astype(str)
+        ok = status[model] == "ok"
+        for q, v in zip(QUANTITIES, (cf.P_fc, cf.P_pf, el.W_star)):
+            v = np.asarray(v, dtype=np.float64).reshape(shape)
+            values[model, q] = v
+            diff = np.abs(v - lj[q])
+            with np.errstate(invalid="ignore", divide="ignore"):
+                # LJ zero within its estimate (or rounding): 0 where the model is zero too
+                # (no hysteresis in either), else inf (a difference in kind)
+                lj_zero = np.abs(lj[q]) <= np.fmax(lj_err[q], _ZERO)
+                model_zero = np.abs(v) <= np.fmax(lj_err[q], _ZERO)
+                rel = np.where(lj_zero, np.where(model_zero, 0.0, np.inf),
+                               diff / np.abs(lj[q]))
+                rel = np.where(ok, rel, np.nan)
+                res = ok & ((lj_err[q] <= _RESOLVED_FRACTION * diff)
+                            | (lj_err[q] <= _RESOLVED_RELATIVE * np.abs(lj[q]))
+                            | (lj_zero & model_zero))
+            rel_error[model, q] = rel
+            resolved[model, q] = res
+    return ModelErrorMap(a_ax, m_ax, names, lj, lj_err, lj_N.reshape(shape), lj_status,
+                         values, rel_error, resolved, status, dict(sorted(messages.items())))

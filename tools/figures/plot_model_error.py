@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""Draw the model-error map: the relative error of DW's and MD's P_fc, P_pf and W* against
+the smooth Lennard-Jones model (LJ), |model - LJ|/|LJ|, on the adhesion map's axes.
+
+    .venv/bin/python tools/figures/plot_model_error.py --outdir doc/figures \\
+        --alpha 0.1:3:5 --mu 0.3:30:5
+
+Writes model_error_map.png (into --outdir, default the current directory): a 2 x 3 grid of
+panels (rows DW, MD; columns P_fc, P_pf, W*), each log10 of the relative error per cell
+over log alpha (x) and log mu (y), with the 1 %, 5 % and 20 % contours. Cells are marked:
+grey with a cross where LJ is unresolved (its zone needs more than the automatic grid's
+cap: no value, never extrapolated), a red cross where a computation failed, a small
+circle where LJ's error estimate is not small against the model error
+(``ModelErrorMap.resolved`` false), and "inf" where LJ's value is zero (W* of a cycle
+without a jump) and the model's is not. Values from `wavyadhesion.model_error_map`
+(`--workers K` runs it on a dask LocalCluster's executor when dask.distributed is
+installed, else on a thread pool). Prints the grid, the time, the per-cell table.
+Uses the installed Python package (`pip install ./python`); matplotlib is imported here only.
+"""
+import argparse
+import time
+from pathlib import Path
+
+import numpy as np
+
+import wavyadhesion as wa
+
+LEVELS = (0.01, 0.05, 0.2)
+LABELS = {"P_fc": r"$P^*_{fc}$", "P_pf": r"$P^*_{pf}$", "W_star": r"$W^*$"}
+
+
+def log_axis(text):
+    """lo:hi:n -> n log-spaced values."""
+    lo, hi, n = text.split(":")
+    return np.logspace(np.log10(float(lo)), np.log10(float(hi)), int(n))
+
+
+def compute(alpha, mu, workers):
+    if workers <= 1:
+        return wa.model_error_map(alpha, mu, progress=True)
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(workers) as ex:
+            return wa.model_error_map(alpha, mu, executor=ex, progress=True)
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True) as cluster, \
+            Client(cluster) as client:
+        return wa.model_error_map(alpha, mu, executor=client.get_executor(), progress=True)
+
+
+def edges(x):
+    """Cell edges of log-spaced centres."""
+    lx = np.log10(x)
+    d = np.diff(lx).mean() if x.size > 1 else 1.0
+    return 10 ** np.concatenate([[lx[0] - d / 2], (lx[:-1] + lx[1:]) / 2, [lx[-1] + d / 2]])
+
+
+def draw(m, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import Normalize
+
+    norm = Normalize(-3, 0)                   # log10 of 0.1 % .. 100 %
+    fig, axes = plt.subplots(len(m.models), 3, figsize=(13, 4 * len(m.models)),
+                             squeeze=False, constrained_layout=True)
+    A, M = np.meshgrid(m.alpha, m.mu, indexing="ij")
+    ea, em = edges(m.alpha), edges(m.mu)
+    for r, model in enumerate(m.models):
+        for c, q in enumerate(wa.QUANTITIES):
+            ax = axes[r, c]
+            rel = m.rel_error[model, q]
+            shown = np.where(np.isinf(rel), 1.0, rel)
+            with np.errstate(divide="ignore"):
+                logr = np.log10(np.clip(shown, 1e-3, 1.0))
+            mesh = ax.pcolormesh(ea, em, np.ma.masked_invalid(logr).T, cmap="viridis",
+                                 norm=norm, shading="flat")
+            fin = np.isfinite(rel)
+            if fin.sum() >= 4 and min(rel.shape) >= 2:
+                cs = ax.contour(A.T, M.T, np.where(fin, np.log10(np.fmax(shown, 1e-12)),
+                                                   np.nan).T,
+                                levels=np.log10(LEVELS), colors=("white", "orange", "red"),
+                                linewidths=1.5)
+                ax.clabel(cs, fmt={np.log10(v): f"{v:.0%}" for v in LEVELS}, fontsize=8)
+            st = m.status[model]
+            for i, j in zip(*np.nonzero(st == "unresolved")):
+                ax.fill_between([ea[i], ea[i + 1]], em[j], em[j + 1], color="0.8", lw=0)
+                ax.plot(m.alpha[i], m.mu[j], "x", color="0.4", ms=6)
+            for i, j in zip(*np.nonzero(st == "failed")):
+                ax.plot(m.alpha[i], m.mu[j], "x", color="red", ms=7)
+            for i, j in zip(*np.nonzero((st == "ok") & ~m.resolved[model, q])):
+                ax.plot(m.alpha[i], m.mu[j], "o", mfc="none", mec="white", ms=7)
+            for i, j in zip(*np.nonzero(np.isinf(rel))):
+                ax.text(m.alpha[i], m.mu[j], "inf", ha="center", va="center", fontsize=7,
+                        color="black")
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlim(ea[0], ea[-1])
+            ax.set_ylim(em[0], em[-1])
+            ax.set_xlabel(r"$\alpha$")
+            ax.set_ylabel(r"$\mu$")
+            ax.set_title(f"{model.upper()} vs LJ: {LABELS[q]}", fontsize=10)
+    cb = fig.colorbar(mesh, ax=axes, shrink=0.8)
+    cb.set_label(r"$\log_{10}$ |model − LJ| / |LJ|  (clipped to [0.1 %, 100 %])")
+    fig.suptitle("Model error against LJ; contours 1 %, 5 %, 20 %; grey x: LJ beyond the "
+                 "automatic grid's cap; o: LJ estimate not small against the error; "
+                 "inf: LJ zero, model not", fontsize=9)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--outdir", default=".", help="directory of the PNG (default: cwd)")
+    ap.add_argument("--alpha", default="0.1:3:5", help="lo:hi:n log-spaced (default 0.1:3:5)")
+    ap.add_argument("--mu", default="0.3:30:5", help="lo:hi:n log-spaced (default 0.3:30:5)")
+    ap.add_argument("--workers", type=int, default=1,
+                    help="parallel workers (dask LocalCluster if installed; default 1)")
+    args = ap.parse_args()
+    alpha, mu = log_axis(args.alpha), log_axis(args.mu)
+    t0 = time.perf_counter()
+    m = compute(alpha, mu, args.workers)
+    seconds = time.perf_counter() - t0
+    path = Path(args.outdir) / "model_error_map.png"
+    draw(m, path)
+    print(f"grid: alpha {args.alpha} x mu {args.mu} ({alpha.size * mu.size} cells), "
+          f"{seconds:.1f} s ({seconds / (alpha.size * mu.size):.2f} s per cell)")
+    print(repr(m))
+    print("alpha     mu        N     " + "  ".join(f"{mo}:{q:<7}" for mo in m.models
+                                                  for q in wa.QUANTITIES))
+    for i, a in enumerate(alpha):
+        for j, u in enumerate(mu):
+            cells = []
+            for mo in m.models:
+                for q in wa.QUANTITIES:
+                    if m.status[mo][i, j] != "ok":
+                        cells.append(f"{m.status[mo][i, j][:10]:>10}")
+                    else:
+                        flag = "" if m.resolved[mo, q][i, j] else "?"
+                        cells.append(f"{m.rel_error[mo, q][i, j]:9.3g}{flag or ' '}")
+            print(f"{a:<9.4g} {u:<9.4g} {m.lj_N[i, j]:<5d} " + " ".join(cells))
+    print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()
