@@ -6,6 +6,7 @@
 !> one call of its `*_core` routine.
 module wa_capi_lj
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_associated, c_f_pointer
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, wa_capacity_too_small, set_error
    use wa_params, only: params_type, new_params
@@ -206,6 +207,13 @@ contains
             return
          end if
          call c_f_pointer(profile, samples, [n_profile])
+         ! a sample not finite would reach the resampling and the solver (a crash)
+         if (.not. all(ieee_is_finite(samples))) then
+            write (text, '(i0)') findloc(ieee_is_finite(samples), .false., dim=1) - 1
+            call set_error(wa_invalid_argument, "profile["//trim(text)//"] is not a "// &
+               "finite number", stat, msg)
+            return
+         end if
          prof = samples
       end if
       call new_params(alpha, mu, params, stat, msg)

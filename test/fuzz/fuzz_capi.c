@@ -71,7 +71,7 @@ enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
    F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION,
    F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, F_GAP_PATH, F_GAP_LAW,
-   F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, N_FAMILY
+   F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, F_LJ_CYCLE, F_LJ_TRACE, N_FAMILY
 };
 /* Function ids: a family, whether its 0.2 compatibility name is called (else the 0.3
    function) and whether a message buffer is passed (4 ids per family). The family's 0.3
@@ -83,7 +83,7 @@ static const char *family_name[N_FAMILY] = {
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
    "wa_version", "wa_equilibrium+gbar", "wa_roots+gbar", "wa_trace_branch+gbar", "wa_profile",
    "wa_gap_path", "wa_gap_law", "wa_gap_critical", "wa_critical_sweep+rows",
-   "wa_adhesion_map", "wa_adhesion_map(60)"};
+   "wa_adhesion_map", "wa_adhesion_map(60)", "wa_lj_cycle", "wa_lj_trace"};
 /* The 0.2 compatibility names of each family: [0] without, [1] with a message (NULL:
    none; the 0.2 base names without a message are gone). */
 static const char *compat_name[N_FAMILY][2] = {
@@ -93,16 +93,19 @@ static const char *compat_name[N_FAMILY][2] = {
    {"wa_equilibrium_gap", "wa_equilibrium_gap_msg"}, {"wa_roots_gap", "wa_roots_gap_msg"},
    {"wa_trace_branch_gap", "wa_trace_branch_gap_msg"}, {NULL, "wa_profile_msg"},
    {NULL, "wa_gap_path_msg"}, {NULL, "wa_gap_law_msg"}, {NULL, "wa_gap_critical_msg"},
-   {NULL, "wa_critical_sweep_status"}, {NULL, NULL}, {"wa_adhesion_map_control", NULL}};
+   {NULL, "wa_critical_sweep_status"}, {NULL, NULL}, {"wa_adhesion_map_control", NULL},
+   {NULL, NULL}, {NULL, NULL}};
 /* 0: no message (the closed forms, wa_adhesion_map_control); 1: with and without a message
    buffer (half the calls each); 2: always with one (wa_critical_sweep_status and the
    0.3 sweep with row_status). */
 static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 2,
-                                      1, 0};
+                                      1, 0, 1, 1};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
-   cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid). */
+   cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid; the
+   smooth-adhesion functions 20-130 ms per call on the usual grids: about 100 each, a
+   quarter of them valid). */
 static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
-                                             8, 96, 24, 16, 16, 16, 1, 1};
+                                             8, 96, 24, 16, 16, 16, 1, 1, 2, 2};
 
 /* The printed name of function id fn (the 0.3 functions: " msg" when a buffer is passed). */
 static const char *fn_name(int fn) {
@@ -196,7 +199,7 @@ typedef struct {
    volatile double limit;              /* time limit of the call under way */
    double max_jump_rel;                /* largest relative gbar* difference of a jump */
    long n_jumps, max_jump_call;
-   long failed_valid[4][N_FAMILY][6]; /* failure-in-domain by model, family, status */
+   long failed_valid[5][N_FAMILY][6]; /* failure-in-domain by model (4: LJ), family, status */
 } shared_t;
 
 static shared_t *shm;
@@ -330,6 +333,9 @@ typedef struct {
    int pick, x_bad; /* wa_profile: root index to take c* from; an x* not finite */
    int control, n_alpha; /* the maps: control, alpha count (n_mu: the scan's mu) */
    double alphas[4], mu_lo, mu_hi;
+   int n_grid, n_profile, n_prof; /* the LJ functions: n, n_profile, samples (0: NULL) */
+   int prof_nan;                  /* a sample is NaN or infinite */
+   double prof[16];
    char repro[1024];
 } call_t;
 
@@ -575,6 +581,34 @@ static void make_repro(call_t *c) {
               ptr_name(c, 3, "m"), ptr_name(c, 4, "&n"), msgpart);
       break;
    }
+   case F_LJ_CYCLE:
+   case F_LJ_TRACE: {
+      char pr[400];
+      if (c->n_prof == 0) {
+         strcpy(pr, "NULL");
+      } else {
+         strcpy(pr, "(double[]){");
+         for (k = 0; k < c->n_prof; k++) {
+            strcat(pr, cd(a3, c->prof[k]));
+            if (k + 1 < c->n_prof) strcat(pr, ", ");
+         }
+         strcat(pr, "}");
+      }
+      if (c->family == F_LJ_CYCLE)
+         sprintf(c->repro, "wa_lj_cycle(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+                 cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid), ci(mcap, c->n_profile), pr,
+                 ptr_name(c, 0, "&P_fc"), ptr_name(c, 1, "&P_pf"), ptr_name(c, 2, "&P_snap"),
+                 ptr_name(c, 3, "&W"), ptr_name(c, 4, "errors"), ptr_name(c, 5, "&n_used"),
+                 msgpart);
+      else
+         sprintf(c->repro, "wa_lj_trace(%s, %s, %s, %s, %s, %d, %s, %s, %s, %s, %s, %s, %s, %s, "
+                 "%s%s)", cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid),
+                 ci(mcap, c->n_profile), pr, c->capacity, ptr_name(c, 0, "P"), ptr_name(c, 1, "g"),
+                 ptr_name(c, 2, "a"), ptr_name(c, 3, "b"), ptr_name(c, 4, "sl"),
+                 ptr_name(c, 5, "sg"), ptr_name(c, 6, "e"), ptr_name(c, 7, "&n"),
+                 ptr_name(c, 8, "&n_used"), msgpart);
+      break;
+   }
    case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP:
       if (c->n_mu > 0 && !(c->null_mask & 1u)) {
@@ -652,6 +686,65 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    }
 }
 
+/* The arguments of wa_lj_cycle / wa_lj_trace (alpha, mu, capacity and the message from
+   gen_call): n mostly 16, 32 or 64, else adversarial (0, the automatic grid of ~1 s, only
+   rarely); the sinusoid (NULL) mostly, else a few samples of one (sometimes shifted: an
+   uneven profile; sometimes < 4 samples or one not finite); NULL pointers. Pointer bits:
+   cycle 0-3 P_fc P_pf P_snap W_star, 4 errors, 5 n_used; trace 0-3 P_star gbar a_star
+   b_star, 4-6 stable_load stable_gap event, 7 n_points, 8 n_used. */
+static int lj_bad_n(const call_t *c);
+static int lj_bad_profile(const call_t *c);
+static void gen_lj(rng_t *r, call_t *c, int valid) {
+   static const int bad_n[] = {-1, -16, 7, 8, 10, 12, 15, 17, 250, 16388, 100000, INT_MAX,
+                               INT_MIN};
+   static const int np[] = {4, 5, 8, 16, 2, 3, 0, -1, INT_MIN};
+   double u = unif(r), shift;
+   int k, trace = c->family == F_LJ_TRACE;
+   int broken = !valid && unif(r) < 0.85; /* break one argument (the others mostly run) */
+   valid = valid && unif(r) < 0.3; /* valid calls cost 20-130 ms: a sixth of them */
+   c->model = WA_MODEL_LJ;
+   if (unif(r) < (valid ? 0.9 : 0.6)) { /* the resolved region (fast, few failures) */
+      c->alpha = log_unif(r, 0.05, 5.0);
+      c->mu = log_unif(r, 0.3, 10.0);
+   }
+   c->n_grid = u < 0.85 || valid ? 16 << below(r, 3) : u < 0.88 ? 0 : bad_n[below(r, 13)];
+   if (valid && trace && unif(r) < 0.1) c->n_grid = 8 + 2 * below(r, 4);
+   c->n_profile = unif(r) < 0.5 ? 4 : (int)next_u64(r);
+   c->n_prof = 0;
+   if (unif(r) < 0.25) { /* samples of 1 - cos 2 pi x* (shifted: uneven) */
+      c->n_prof = np[below(r, valid ? 4 : 6)];
+      shift = unif(r) < 0.3 ? unif(r) : 0.0;
+      for (k = 0; k < c->n_prof; k++) c->prof[k] = 1.0 - cos(2.0 * M_PI * (k + shift) / c->n_prof);
+      c->n_profile = c->n_prof;
+      if (!valid && unif(r) < 0.2) c->n_profile = np[4 + below(r, 5)];
+      if (!valid && c->n_prof > 0 && unif(r) < 0.15) {
+         c->prof[below(r, c->n_prof)] = (const double[]){NAN, INFINITY, -INFINITY}[below(r, 3)];
+         c->prof_nan = 1;
+      }
+   }
+   if (c->n_prof == 0 && !valid && unif(r) < 0.05) c->n_prof = -1; /* NULL with n_profile 0 */
+   if (c->n_prof < 0) c->n_prof = 0;
+   c->capacity = unif(r) < 0.6 ? 512 + below(r, 2000) : unif(r) < 0.7 ? below(r, 40)
+               : valid ? 0 : (const int[]){0, -1, INT_MIN}[below(r, 3)];
+   if (c->capacity == 0 && unif(r) < 0.8) c->null_mask |= 0x7Fu; /* asks for the count */
+   if (c->null_mask == 0 || unif(r) < 0.5) /* the optional outputs NULL or not */
+      c->null_mask |= (trace ? 0x170u : 0x30u) & (unsigned)next_u64(r);
+   if (!valid && unif(r) < 0.15)
+      c->null_mask |= unif(r) < 0.8 ? 1u << below(r, trace ? 9 : 6)
+                                    : (unsigned)next_u64(r) & (trace ? 0x1FFu : 0x3Fu);
+   if (valid) c->null_mask &= trace ? (c->capacity > 0 ? 0x170u : 0x17Fu) : 0x30u;
+   if (broken && !lj_bad_n(c) && !lj_bad_profile(c) && c->mu != 0 && !(c->null_mask & 15u)) {
+      switch (below(r, 5)) {
+      case 0: c->n_grid = bad_n[below(r, 13)]; if (c->n_grid == 250 && trace) c->n_grid = 7; break;
+      case 1: c->mu = unif(r) < 0.5 ? 0.0 : special(r); break;
+      case 2: c->alpha = special(r); break;
+      case 3: c->null_mask |= 1u << below(r, 4); if (trace && c->capacity == 0) c->capacity = -1; break;
+      case 4: if (trace) { c->capacity = unif(r) < 0.5 ? -1 : INT_MIN; break; }
+              c->mu = -log_unif(r, 1e-6, 1e6); break;
+      }
+   }
+}
+
 static void gen_call(long index, call_t *c) {
    rng_t r;
    int total = 0, k, u, valid;
@@ -709,6 +802,11 @@ static void gen_call(long index, call_t *c) {
    if (k == F_SWEEP_STATUS && c->null_mask)  /* six pointers: mu, 4 outputs, row_status */
       c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 6) : (unsigned)next_u64(&r) & 0x3Fu;
    if (k == F_MAP || k == F_MAP_CONTROL) gen_map(&r, c, valid);
+   if (k == F_LJ_CYCLE || k == F_LJ_TRACE) {
+      c->null_mask = 0;
+      if (valid && c->mu == 0) c->mu = log_unif(&r, 1e-2, 30.0); /* mu = 0: no LJ law */
+      gen_lj(&r, c, valid);
+   }
    if (k == F_GAP_PATH && c->null_mask)       /* eleven pointers */
       c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 11) : (unsigned)next_u64(&r) & 0x7FFu;
    if (k == F_GAP_LAW) {
@@ -1634,6 +1732,116 @@ static void check_gap_critical(const call_t *c, int st, int invalid) {
                 v[0], v[4], v[8], v[7], v[9]);
 }
 
+/* wa_lj_cycle: P_fc, P_pf, P_snap, W_star in dbuf[0][0..3], errors in dbuf[1], n_used in
+   iscalar[0]; wa_lj_trace: P_star, gbar, a_star, b_star in dbuf[0..3], stable_load,
+   stable_gap, event in ibuf[0..2], n_points and n_used in iscalar[0..1]. The samples are
+   passed from lj_prof (read only). */
+static double lj_prof[16];
+
+static int run_lj(const call_t *c, int msg) {
+   const double *prof = c->n_prof > 0 ? lj_prof : NULL;
+   memcpy(lj_prof, c->prof, sizeof lj_prof);
+   lib_call();
+   if (c->family == F_LJ_CYCLE) {
+      fill_buffers(4);
+      return wa_lj_cycle(c->alpha, c->mu, c->n_grid, c->n_profile, prof, P(0, D(0)),
+                         P(1, D(0) + 1), P(2, D(0) + 2), P(3, D(0) + 3), P(4, D(1)),
+                         P(5, IS(0)), NMSG(c, msg));
+   }
+   fill_buffers(c->capacity);
+   return wa_lj_trace(c->alpha, c->mu, c->n_grid, c->n_profile, prof, c->capacity, P(0, D(0)),
+                      P(1, D(1)), P(2, D(2)), P(3, D(3)), P(4, I(0)), P(5, I(1)), P(6, I(2)),
+                      P(7, IS(0)), P(8, IS(1)), NMSG(c, msg));
+}
+
+/* The n an LJ call documents as invalid: the cycle 0 or a multiple of 4 >= 16, the trace 0
+   or even >= 8, both at most 16384 (the fuzzer's n stay below the other caps). */
+static int lj_bad_n(const call_t *c) {
+   int n = c->n_grid;
+   if (n == 0) return 0;
+   if (c->family == F_LJ_CYCLE) return n < 16 || n % 4 != 0 || n > 16384;
+   return n < 8 || n % 2 != 0 || n > 16384;
+}
+/* The profile (not NULL) with fewer than 4 samples or one not finite. */
+static int lj_bad_profile(const call_t *c) {
+   return c->n_prof > 0 && (c->n_profile < 4 || c->prof_nan);
+}
+/* A grid cap exceeded ("lj: ..."), documented as WA_INVALID_ARGUMENT: the automatic grid
+   (n = 0) beyond 2048 points for these (alpha, mu), or an n beyond 2048 on an uneven
+   profile. */
+static int lj_cap_message(const call_t *c, const char *m) {
+   return !strncmp(m, "lj: ", 4) && (c->n_grid == 0 || c->n_grid > 2048);
+}
+
+static void check_lj_cycle(const call_t *c, int st, int invalid) {
+   unsigned nm = c->null_mask;
+   int k, n_used = *IS(0);
+   const double *v = D(0), *e = D(1);
+   check_status(c, st, 0x2F, invalid); /* never WA_CAPACITY_TOO_SMALL */
+   if (memcmp(lj_prof, c->prof, sizeof lj_prof) != 0)
+      violation(c, K_OVERRUN, "the input profile was modified");
+   for (k = 0; k < 4; k++) {
+      int want_nan = st != WA_OK;
+      if (!(nm & (1u << k)) && (want_nan ? !isnan(v[k]) : !isfinite(v[k])))
+         violation(c, want_nan ? K_FAIL_OUTPUT : K_NONFINITE, "status %d: value %d %.17g", st,
+                   k, v[k]);
+      if (!(nm & 16u) && (want_nan ? !isnan(e[k]) : !(e[k] >= 0 && isfinite(e[k]))))
+         violation(c, want_nan ? K_FAIL_OUTPUT : K_NONFINITE, "status %d: errors[%d] %.17g", st,
+                   k, e[k]);
+   }
+   if (nm & 32u) return;
+   if (st != WA_OK && n_used != 0)
+      violation(c, K_FAIL_OUTPUT, "status %d with n_used %d", st, n_used);
+   if (st == WA_OK && (c->n_grid != 0 ? n_used != c->n_grid
+                                      : n_used < 16 || n_used % 4 != 0 || n_used > 2048))
+      violation(c, K_STATE, "n %d, n_used %d", c->n_grid, n_used);
+   if (st == WA_OK && !(nm & 3u) && !(v[0] >= v[1]))
+      violation(c, K_ORDER, "P_fc %.17g < P_pf %.17g", v[0], v[1]);
+}
+
+static int ok_lj_event(int e) { return e == 0 || e == 1 || e == 14 || e == 5 || e == 15 || e == 8; }
+
+static void check_lj_trace(const call_t *c, int st, int invalid) {
+   unsigned nm = c->null_mask;
+   int n = *IS(0), n_used = *IS(1), k, j, m, cap = c->capacity;
+   check_status(c, st, 0x3F, invalid);
+   if (memcmp(lj_prof, c->prof, sizeof lj_prof) != 0)
+      violation(c, K_OVERRUN, "the input profile was modified");
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) {
+      if ((!(nm & 128u) && n != 0) || (!(nm & 256u) && n_used != 0))
+         violation(c, K_FAIL_OUTPUT, "status %d with n_points %d, n_used %d", st, n, n_used);
+      if (cap > 0) check_untouched(c, 4, 3, 0, cap);
+      return;
+   }
+   if (nm & 128u) return;
+   if (n < 2 || (st == WA_OK && n > cap) || (st == WA_CAPACITY_TOO_SMALL && n <= cap))
+      violation(c, K_COUNT, "status %d with n_points %d, capacity %d", st, n, cap);
+   if (!(nm & 256u) && (c->n_grid != 0 ? n_used != c->n_grid : n_used < 8 || n_used % 2 != 0))
+      violation(c, K_STATE, "n %d, n_used %d", c->n_grid, n_used);
+   m = n < cap ? n : cap;
+   if (m > FILL) m = FILL;
+   if (m < 0) m = 0;
+   for (k = 0; k < m; k++) {
+      for (j = 0; j < 4; j++)
+         if (!isfinite(D(j)[k])) {
+            violation(c, K_NONFINITE, "point %d of %d: array %d %.17g", k, n, j, D(j)[k]);
+            return;
+         }
+      if (!valid_a(D(2)[k]) || !valid_a(D(3)[k]) ||
+          (!(nm & 16u) && I(0)[k] != 0 && I(0)[k] != 1) ||
+          (!(nm & 32u) && I(1)[k] != 0 && I(1)[k] != 1) || (!(nm & 64u) && !ok_lj_event(I(2)[k]))) {
+         violation(c, K_STATE, "point %d of %d: a* %.17g b* %.17g stable %d %d event %d", k, n,
+                   D(2)[k], D(3)[k], I(0)[k], I(1)[k], I(2)[k]);
+         return;
+      }
+   }
+   if (!(nm & 64u) && m > 0 &&
+       (I(2)[0] != WA_EVENT_BRANCH_END || (m == n && I(2)[n - 1] != WA_EVENT_BRANCH_END)))
+      violation(c, K_STATE, "events %d ... %d (want %d at both ends)", I(2)[0], I(2)[m - 1],
+                WA_EVENT_BRANCH_END);
+   if (cap > 0) check_untouched(c, 4, 3, m, cap);
+}
+
 /* ------------------------------------------------------ the whole message */
 
 static int run_family(const call_t *c, int msg);
@@ -1654,6 +1862,8 @@ static unsigned family_args(int f) {
    case F_CRITICAL_SWEEP: case F_SWEEP_STATUS: return A_MODEL | A_ALPHA | A_MUS | A_NMU;
    case F_PROFILE: return base | A_A | A_CS | A_N | A_X;
    case F_GAP_LAW: return base | A_N | A_GBAR;
+   case F_LJ_CYCLE: return A_ALPHA | A_MU | A_N;
+   case F_LJ_TRACE: return A_ALPHA | A_MU | A_N | A_CAP;
    }
    return 0;
 }
@@ -1666,6 +1876,7 @@ static int names_bad_argument(const call_t *c, const char *m) {
    int len = 0, idx = -1, k, bad;
    unsigned args = family_args(c->family);
    if (strstr(m, "must not be NULL")) return c->null_mask != 0;
+   if ((c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) && lj_cap_message(c, m)) return 1;
    if (c->family == F_MAP || c->family == F_MAP_CONTROL) {
       /* the map's own checks ("adhesion_map: every alpha must be in ...") */
       if (!strncmp(m, "adhesion_map: ", 14)) m += 14;
@@ -1689,6 +1900,15 @@ static int names_bad_argument(const call_t *c, const char *m) {
    }
    name[len] = 0;
    if (m[len] == '[') idx = atoi(m + len + 1);
+   if (c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) { /* mu = 0 has no LJ law */
+      if (!strcmp(name, "alpha")) return !valid_alpha(c->alpha);
+      if (!strcmp(name, "mu")) return !valid_mu(c->mu) || c->mu == 0;
+      if (!strcmp(name, "n")) return lj_bad_n(c);
+      if (!strcmp(name, "n_profile")) return c->n_prof > 0 && c->n_profile < 4;
+      if (!strcmp(name, "profile")) return lj_bad_profile(c);
+      if (!strcmp(name, "capacity")) return c->family == F_LJ_TRACE && c->capacity < 0;
+      return 0;
+   }
    if (!strcmp(name, "model")) return (args & A_MODEL) && !valid_model(c->model);
    if (!strcmp(name, "alpha")) return (args & A_ALPHA) && !valid_alpha(c->alpha);
    if (!strcmp(name, "mu")) {
@@ -1744,7 +1964,8 @@ static void check_full_message(const call_t *c, int st, int invalid) {
       return;
    }
    if (st != WA_INVALID_ARGUMENT) return;
-   if (!invalid)
+   if (!invalid && !((c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) &&
+                     lj_cap_message(c, full_msg)))
       violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT: '%s'", full_msg);
    else if (!names_bad_argument(c, full_msg))
       violation(c, K_WRONG_ARGUMENT, "'%s'", full_msg);
@@ -1811,6 +2032,12 @@ static int is_invalid(const call_t *c) {
          bad = bad || !valid_alpha(c->alphas[k]) || (k > 0 && !(c->alphas[k] > c->alphas[k - 1]));
       return bad;
    }
+   case F_LJ_CYCLE:
+      return !valid_alpha(c->alpha) || !valid_mu(c->mu) || c->mu == 0 || lj_bad_n(c) ||
+             lj_bad_profile(c) || (nm & 15u);
+   case F_LJ_TRACE:
+      return !valid_alpha(c->alpha) || !valid_mu(c->mu) || c->mu == 0 || lj_bad_n(c) ||
+             lj_bad_profile(c) || (nm & 128u) || cap < 0 || (cap > 0 && (nm & 15u));
    case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
@@ -1852,6 +2079,8 @@ static int run_family(const call_t *c, int msg) {
    case F_GAP_PATH: return run_gap_path(c, msg);
    case F_GAP_LAW: return run_gap_law(c, msg);
    case F_GAP_CRITICAL: return run_gap_critical(c, msg);
+   case F_LJ_CYCLE:
+   case F_LJ_TRACE: return run_lj(c, msg);
    }
    return -1;
 }
@@ -1877,6 +2106,8 @@ static void check_family(const call_t *c, int st, int invalid) {
    case F_GAP_PATH: check_gap_path(c, st, invalid); break;
    case F_GAP_LAW: check_gap_law(c, st, invalid); break;
    case F_GAP_CRITICAL: check_gap_critical(c, st, invalid); break;
+   case F_LJ_CYCLE: check_lj_cycle(c, st, invalid); break;
+   case F_LJ_TRACE: check_lj_trace(c, st, invalid); break;
    }
 }
 
@@ -1890,6 +2121,12 @@ static int used_elements(const call_t *c, int st) {
    }
    if (f == F_PROFILE || f == F_GAP_LAW) return c->capacity > 0 ? c->capacity : 0;
    if (f == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
+   if (f == F_LJ_CYCLE) return 4;
+   if (f == F_LJ_TRACE) {
+      if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 128u)) return 0;
+      n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
+      return n < 0 ? 0 : n;
+   }
    if (f == F_GAP_PATH) {
       if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 0x80u)) return 0;
       n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
@@ -1918,6 +2155,8 @@ static int filled_elements(const call_t *c) {
        c->family == F_GAP_PATH || c->family == F_GAP_LAW)
       return c->capacity > 0 ? c->capacity : 0;
    if (c->family == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
+   if (c->family == F_LJ_CYCLE) return 4;
+   if (c->family == F_LJ_TRACE) return c->capacity > 0 ? c->capacity : 0;
    return 0;
 }
 
@@ -2141,7 +2380,9 @@ static void run_one(long index) {
 
    gen_call(index, &c);
    /* the time limit: the maps 10 times it, a sweep once per row (each row is a load path) */
-   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL ? 10
+   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL || c.family == F_LJ_CYCLE ||
+                         c.family == F_LJ_TRACE
+                    ? 10
                  : (c.family == F_CRITICAL_SWEEP || c.family == F_SWEEP_STATUS) && c.n_mu > 1
                     ? c.n_mu
                     : 1) * opt_timeout;
@@ -2517,10 +2758,10 @@ int main(int argc, char **argv) {
       if (kind_severe[k]) severe += 1;
    }
    if (shm->viol[K_FAILED_VALID]) {
-      static const char *mname[4] = {"westergaard", "jkr", "dw", "md"};
+      static const char *mname[5] = {"westergaard", "jkr", "dw", "md", "lj"};
       int m, f;
       printf("  failure-in-domain by model and function (statuses 2 3 5):\n");
-      for (m = 0; m < 4; m++)
+      for (m = 0; m < 5; m++)
          for (f = 0; f < N_FAMILY; f++) {
             long *v = shm->failed_valid[m][f];
             if (v[2] + v[3] + v[5])
