@@ -8,6 +8,7 @@
 !> An even profile is solved on the half period (nodes 0..N/2, the interior ones counted
 !> twice); any other on the whole period.
 module wa_bem_elastic
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use wa_kinds, only: wp, pi
    use wa_status, only: wa_ok, wa_invalid_argument, set_error
    implicit none
@@ -50,6 +51,12 @@ contains
          if (size(profile) < 4) then
             call set_error(wa_invalid_argument, "profile must hold at least 4 samples of "// &
                "one period", status, errmsg)
+            return
+         end if
+         ! a sample that is not finite would reach the resampling and the solver (a crash)
+         if (.not. all(ieee_is_finite(profile))) then
+            call set_error(wa_invalid_argument, "profile: every sample must be a finite "// &
+               "number (height over Delta)", status, errmsg)
             return
          end if
          grid%even = is_even(profile)

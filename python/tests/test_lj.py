@@ -139,3 +139,10 @@ def test_profile_of_a_traced_state():
         wa.profile("lj", 0.3, 1.0, 0.2, c_star=0.3, n=64)
     with pytest.raises(wa.InvalidArgumentError, match="only for model='lj'"):
         wa.profile("dw", 0.3, 1.0, 0.2, n=64)
+
+
+def test_profile_with_a_sample_not_finite_is_refused():
+    """A NaN or infinite sample is an invalid argument, named (it crashed the solver)."""
+    for bad in (np.nan, np.inf):
+        with pytest.raises(wa.InvalidArgumentError, match="profile"):
+            wa.critical_forces("lj", 0.3, 3.0, n=16, profile=[0.0, bad, 2.0, 1.0])

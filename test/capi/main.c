@@ -1545,6 +1545,17 @@ static void test_lj(void) {
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "alpha"), "lj alpha NaN: '%s'", msg);
    st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, NULL, &snap, &w, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "P_pf") && isnan(fc), "lj NULL: '%s'", msg);
+   {  /* a sample that is not finite: refused (it crashed the solver before the check) */
+      double bad_prof[4] = {0.0, INFINITY, 2.0, 1.0};
+      st = wa_lj_cycle(0.3, 3.0, 16, 4, bad_prof, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "profile") && isnan(fc),
+            "lj non-finite profile: status %d '%s'", st, msg);
+      bad_prof[1] = NAN;
+      st = wa_lj_trace(0.3, 3.0, 16, 4, bad_prof, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
+                       &n_pts, NULL, msg, 256);
+      CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "profile"),
+            "lj_trace NaN profile: status %d '%s'", st, msg);
+   }
    st = wa_lj_cycle(0.3, 3.0, 20000, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && isnan(fc), "lj n = 20000: %d '%s'", st, msg);
 

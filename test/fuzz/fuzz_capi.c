@@ -102,10 +102,10 @@ static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 
                                       1, 0, 1, 1};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
    cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid; the
-   smooth-adhesion functions 20-130 ms per call on the usual grids: about 100 each, a
+   smooth-adhesion functions 20-130 ms per call on the usual grids: about 50 each, a
    quarter of them valid). */
 static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
-                                             8, 96, 24, 16, 16, 16, 1, 1, 2, 2};
+                                             8, 96, 24, 16, 16, 16, 1, 1, 1, 1};
 
 /* The printed name of function id fn (the 0.3 functions: " msg" when a buffer is passed). */
 static const char *fn_name(int fn) {
