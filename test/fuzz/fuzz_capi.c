@@ -2379,8 +2379,13 @@ static void run_one(long index) {
    char msg1[MSG_REAL];
 
    gen_call(index, &c);
-   /* the time limit: the maps 10 times it, a sweep once per row (each row is a load path) */
-   shm->limit = (c.family == F_MAP || c.family == F_MAP_CONTROL || c.family == F_LJ_CYCLE ||
+   /* the time limit: the maps and the smooth-adhesion calls 10 times it, those on the
+      automatic grid 75 times (at large alpha the traced adhered branch is long: alpha 34.8,
+      mu 21.9 takes 98 s, a cost to bring down, not a hang), a sweep once per row (each row
+      is a load path) */
+   shm->limit = ((c.family == F_LJ_CYCLE || c.family == F_LJ_TRACE) && c.n_grid == 0
+                    ? 75
+                 : c.family == F_MAP || c.family == F_MAP_CONTROL || c.family == F_LJ_CYCLE ||
                          c.family == F_LJ_TRACE
                     ? 10
                  : (c.family == F_CRITICAL_SWEEP || c.family == F_SWEEP_STATUS) && c.n_mu > 1
