@@ -22,6 +22,7 @@ module wa_bem_trace
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
       bordered_solve, newton, tangent_at, point_info, metric_dot, gap_constraint, jacobian_free
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
+   use wa_branch_types, only: grow
    implicit none
    private
 
@@ -498,35 +499,16 @@ contains
    subroutine reserve(branch, cap, m)
       type(lj_branch_type), intent(inout) :: branch
       integer, intent(in) :: cap, m
-      call grow_r(branch%s); call grow_r(branch%p_star); call grow_r(branch%gbar)
-      call grow_r(branch%a_star); call grow_r(branch%b_star); call grow_r(branch%h_min)
-      call grow_r(branch%h_max); call grow_r(branch%dp); call grow_r(branch%dg)
-      call grow_i(branch%neg_load); call grow_i(branch%neg_gap)
-      call grow_l(branch%stable_load); call grow_l(branch%stable_gap)
-      call grow_i(branch%event); call grow_i(branch%extremum)
+      call grow(branch%s, branch%n, cap); call grow(branch%p_star, branch%n, cap)
+      call grow(branch%gbar, branch%n, cap); call grow(branch%a_star, branch%n, cap)
+      call grow(branch%b_star, branch%n, cap); call grow(branch%h_min, branch%n, cap)
+      call grow(branch%h_max, branch%n, cap); call grow(branch%dp, branch%n, cap)
+      call grow(branch%dg, branch%n, cap); call grow(branch%neg_load, branch%n, cap)
+      call grow(branch%neg_gap, branch%n, cap); call grow(branch%stable_load, branch%n, cap)
+      call grow(branch%stable_gap, branch%n, cap); call grow(branch%event, branch%n, cap)
+      call grow(branch%extremum, branch%n, cap)
       call grow_2(branch%z); call grow_2(branch%t)
    contains
-      subroutine grow_r(v)
-         real(wp), allocatable, intent(inout) :: v(:)
-         real(wp), allocatable :: tmp(:)
-         allocate (tmp(cap))
-         if (allocated(v)) tmp(1:branch%n) = v(1:branch%n)
-         call move_alloc(tmp, v)
-      end subroutine grow_r
-      subroutine grow_i(v)
-         integer, allocatable, intent(inout) :: v(:)
-         integer, allocatable :: tmp(:)
-         allocate (tmp(cap))
-         if (allocated(v)) tmp(1:branch%n) = v(1:branch%n)
-         call move_alloc(tmp, v)
-      end subroutine grow_i
-      subroutine grow_l(v)
-         logical, allocatable, intent(inout) :: v(:)
-         logical, allocatable :: tmp(:)
-         allocate (tmp(cap))
-         if (allocated(v)) tmp(1:branch%n) = v(1:branch%n)
-         call move_alloc(tmp, v)
-      end subroutine grow_l
       subroutine grow_2(v)
          real(wp), allocatable, intent(inout) :: v(:, :)
          real(wp), allocatable :: tmp(:, :)

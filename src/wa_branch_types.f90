@@ -8,7 +8,12 @@ module wa_branch_types
    implicit none
    private
 
-   public :: branch_type, trace_options, append, reserve
+   public :: branch_type, trace_options, append, reserve, grow
+
+   !> Grow an allocatable array to `capacity`, keeping its first n entries
+   interface grow
+      module procedure grow_real, grow_int, grow_logical
+   end interface grow
 
    !> A traced branch: points in the order of the curve (not necessarily of a*).
    type :: branch_type
