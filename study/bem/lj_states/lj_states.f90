@@ -77,7 +77,7 @@ program lj_states
    write (u, '(2es24.16,3(1x,i0),4es14.5,es24.16)') alpha, mu, n_period, branch%n, &
       walked%n, t_trace, t_cycle, eps
    write (u, '(a)') "# per state: index P gbar a_star h_min stable_load neighbour "// &
-      "cold(status iterations wall maxdiff/eps) warm(same); then the gap field and the "// &
+      "cold(status iterations cpu maxdiff/eps) warm(same); then the gap field and the "// &
       "neighbour's (N values each)"
    write (u, '(i0)') n_pick
    do kk = 1, n_pick
@@ -97,7 +97,8 @@ program lj_states
 contains
 
    !> Solve state k alone at its mean gap: from the rigid gap (start = 0) or from the
-   !> traced state start; res = (status, Newton iterations, wall seconds, max |h - h_k|/eps).
+   !> traced state start; res = (status, Newton iterations, processor seconds,
+   !> max |h - h_k|/eps).
    subroutine alone(k, start, res)
       integer, intent(in) :: k, start
       real(wp), intent(out) :: res(4)
@@ -123,7 +124,7 @@ contains
       call newton(fresh, gap_constraint(fresh), branch%gbar(k), z, jac, st, n_factor, its)
       call jacobian_free(jac)
       call clock(s1)
-      res = [real(st, wp), real(its, wp), s1(1) - s0(1), &
+      res = [real(st, wp), real(its, wp), s1(2) - s0(2), &
          maxval(abs(z(1:n) - branch%z(1:n, k)))/eps]
    end subroutine alone
 
