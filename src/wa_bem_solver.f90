@@ -218,15 +218,15 @@ contains
       call plans_destroy(jac%plans)
    end subroutine jacobian_free
 
-   !> y = W K x on the unknowns, by FFT over the whole period.
+   !> y = W K x on the unknowns, by FFT (by the cosine transform of the half period on
+   !> an even grid).
    subroutine stiffness_apply(problem, jac, x, y)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: y(:)
-      real(wp) :: g(0:problem%grid%n_period - 1)
-      call circulant_apply(jac%plans, problem%symbol, full_period(problem%grid, x), g)
-      y = problem%grid%w*g(0:problem%grid%n - 1)
+      call circulant_apply(jac%plans, problem%symbol, x, y)
+      y = problem%grid%w*y
    end subroutine stiffness_apply
 
    !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
@@ -252,12 +252,9 @@ contains
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: b(:)
       real(wp), intent(out) :: x(:)
-      real(wp) :: g(0:problem%grid%n_period - 1)
       if (problem%two_grid) then
-         ! S = W A: A^-1 (b/w), on the whole period (an even field unfolded)
-         call twogrid_apply(jac%tg, jac%plans, problem%symbol, &
-            full_period(problem%grid, b/problem%grid%w), g)
-         x = g(0:problem%grid%n - 1)
+         ! S = W A: A^-1 (b/w), on the unknowns (an even field's half period)
+         call twogrid_apply(jac%tg, jac%plans, problem%symbol, b/problem%grid%w, x)
       else
          x = b
          call ldl_solve(jac%fact, x)
@@ -276,7 +273,8 @@ contains
       n = problem%grid%n
       allocate (sig(n))
       if (.not. allocated(jac%dw)) allocate (jac%dw(n), jac%q(n))
-      if (jac%plans%np /= problem%grid%n_period) call plans_create(jac%plans, problem%grid%n_period)
+      if (jac%plans%np /= problem%grid%n_period .or. (jac%plans%even .neqv. problem%grid%even)) &
+         call plans_create(jac%plans, problem%grid%n_period, problem%grid%even)
       call law_eval(problem%law, z(1:n), sig, jac%dw)
       if (problem%two_grid) then
          call twogrid_setup(full_period(problem%grid, jac%dw), problem%kc, problem%ratio, &
