@@ -12,7 +12,7 @@
 !> system is folded to its even half.
 module wa_bem_fast
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_double
-   use wa_kinds, only: wp
+   use wa_kinds, only: wp, pi
    use wa_fftw, only: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
       fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r, &
       fftw_redft00
@@ -24,11 +24,14 @@ module wa_bem_fast
    public :: twogrid_type, coarse_stiffness, twogrid_setup, twogrid_apply
 
    !> The FFTW plans of one period length, owned by the caller's workspace: halfcomplex
-   !> there and back on the whole period, or (even) one cosine transform of the half.
+   !> there and back on the whole period, or (even) one cosine transform of the half: for
+   !> N/2 even by a halfcomplex transform of length N/2 (dct1, with the tables of
+   !> sin and cos(pi j/(N/2))), else FFTW's own.
    type :: fft_plans_type
       integer :: np = 0
       logical :: even = .false.
       type(c_ptr) :: fwd = c_null_ptr, bwd = c_null_ptr
+      real(wp), allocatable :: sn(:), cs(:)
    end type fft_plans_type
 
    !> A two-grid preconditioner at one state: fine slope, Jacobi scaling (on the half
@@ -50,18 +53,27 @@ contains
 
    !> Plans for the circulants of period np (FFTW_ESTIMATE: no trial runs; measured
    !> planning costs more than the whole cycle at N = 512): the halfcomplex transforms of
-   !> length np, or (even) the cosine transform of length np/2 + 1 (at N = 16384 it takes
-   !> a third of the time of the halfcomplex pair).
+   !> length np, or (even) the cosine transform of length np/2 + 1 (FFTW's REDFT00 takes
+   !> a third of the time of the halfcomplex pair at N = 16384, but allocates its buffers
+   !> at every call: dct1 does not).
    subroutine plans_create(plans, np, even)
       type(fft_plans_type), intent(inout) :: plans
       integer, intent(in) :: np
       !> the fields are even, given on the half period (default false)
       logical, intent(in), optional :: even
       real(c_double), allocatable :: x(:), y(:)
+      integer :: m, j
       call plans_destroy(plans)
       if (present(even)) plans%even = even
       call fftw_make_planner_thread_safe()
-      if (plans%even) then
+      if (plans%even .and. mod(np, 4) == 0) then
+         m = np/2
+         allocate (x(m), y(m))
+         plans%fwd = fftw_plan_r2r_1d(m, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+         allocate (plans%sn(0:m - 1), plans%cs(0:m - 1))
+         plans%sn = [(sin(pi*j/m), j = 0, m - 1)]
+         plans%cs = [(cos(pi*j/m), j = 0, m - 1)]
+      else if (plans%even) then
          allocate (x(np/2 + 1), y(np/2 + 1))
          plans%fwd = fftw_plan_r2r_1d(np/2 + 1, x, y, fftw_redft00, &
             ior(fftw_estimate, fftw_unaligned))
@@ -81,6 +93,7 @@ contains
       plans%bwd = c_null_ptr
       plans%np = 0
       plans%even = .false.
+      if (allocated(plans%sn)) deallocate (plans%sn, plans%cs)
    end subroutine plans_destroy
 
    !> Eigenvalues over np of the symmetric circulant with first column col (real), in
@@ -129,6 +142,12 @@ contains
       real(wp), intent(in) :: symbol(0:), x(0:)
       real(wp), intent(out) :: y(0:)
       real(c_double) :: xw(size(x)), c(size(x))
+      if (allocated(plans%sn)) then
+         call dct1(plans, x, c)
+         c = c*symbol(0:size(x) - 1)
+         call dct1(plans, c, y)
+         return
+      end if
       xw = x
       call fftw_execute_r2r(plans%fwd, xw, c)
       c = c*symbol(0:size(x) - 1)
@@ -139,6 +158,32 @@ contains
       end if
       y = xw
    end subroutine transform
+
+   !> The type-I cosine transform (FFTW's REDFT00) of x(0:m), m = np/2 even,
+   !>   y(k) = x(0) + (-1)^k x(m) + 2 sum_{j=1}^{m-1} x(j) cos(pi j k/m),
+   !> by one halfcomplex transform of length m of u(j) = (x(j) + x(m-j))/2 - sin(pi j/m)
+   !> (x(j) - x(m-j)): its cosine sums are y(2k)/2 and its sine sums the differences
+   !> (y(2k+1) - y(2k-1))/2 (the classical reduction, Numerical Recipes' cosft1).
+   subroutine dct1(plans, x, y)
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: x(0:)
+      real(wp), intent(out) :: y(0:)
+      real(c_double) :: u(0:size(x) - 2), h(0:size(x) - 2)
+      integer :: m, j, k
+      m = size(x) - 1
+      u(0) = 0.5_wp*(x(0) + x(m))
+      do j = 1, m - 1
+         u(j) = 0.5_wp*(x(j) + x(m - j)) - plans%sn(j)*(x(j) - x(m - j))
+      end do
+      call fftw_execute_r2r(plans%fwd, u, h)
+      y(1) = x(0) - x(m) + 2.0_wp*dot_product(x(1:m - 1), plans%cs(1:m - 1))
+      y(0) = 2.0_wp*h(0)
+      do k = 1, m/2 - 1
+         y(2*k) = 2.0_wp*h(k)
+         y(2*k + 1) = y(2*k - 1) - 2.0_wp*h(m - k)
+      end do
+      y(m) = 2.0_wp*h(m/2)
+   end subroutine dct1
 
    !> First column of the coarse circulant P^T K P (coarse period nc = np/ratio) from the
    !> fine circulant's column kcol.
