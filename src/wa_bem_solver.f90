@@ -52,6 +52,8 @@ module wa_bem_solver
       type(twogrid_type) :: tg
       type(fft_plans_type) :: plans
       real(wp), allocatable :: dw(:), q(:)
+      !> GMRES's Krylov basis, kept from call to call (krylov_solve)
+      real(wp), allocatable :: basis(:, :)
       !> negative eigenvalues of the Hessians under load control (S) and gap control
       !> (S on mean-gap-preserving variations)
       integer :: neg_load = 0, neg_gap = 0
@@ -68,6 +70,8 @@ module wa_bem_solver
    real(wp), parameter :: h_floor_fraction = 0.1_wp
    !> GMRES iterations above which the preconditioner is refactorised
    integer, parameter :: krylov_refresh = 12
+   !> GMRES iterations at most (no restart)
+   integer, parameter :: krylov_dim = 40
 
    !> Cap of the unknowns per state (N/2 + 1 on an even profile, N otherwise): beyond
    !> dense_max_unknowns a state costs O(N) memory, and a branch of a few hundred states
@@ -236,10 +240,9 @@ contains
       real(wp), intent(in) :: z(:)
       real(wp), intent(out) :: r(:)
       real(wp), intent(out), optional :: dw(:)
-      real(wp), allocatable :: sig(:), slope(:)
+      real(wp) :: sig(problem%grid%n), slope(problem%grid%n)
       integer :: n
       n = problem%grid%n
-      allocate (sig(n), slope(n))
       call law_eval(problem%law, z(1:n), sig, slope)
       call stiffness_apply(problem, jac, z(1:n) - problem%grid%f, r)
       r = r + problem%grid%w*(sig + z(n + 1))
@@ -307,7 +310,7 @@ contains
    !> S_frozen x + w y = r1, a(1:n) . x + a(n+1) y = r2 (S as factorised in jac).
    subroutine bordered_solve(problem, jac, a, r1, r2, x, y)
       type(lj_problem_type), intent(in) :: problem
-      type(jacobian_type), intent(in) :: jac
+      type(jacobian_type), intent(inout) :: jac
       real(wp), intent(in) :: a(:), r1(:), r2
       real(wp), intent(out) :: x(:), y
       real(wp), allocatable :: e1(:), dx(:)
@@ -435,10 +438,11 @@ contains
 
    !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
    !> preconditioned by the block elimination on the factorisation in jac. ok false when
-   !> the relative residual (tolerance, default 1e-11) is not reached in m iterations.
+   !> the relative residual (tolerance, default 1e-11) is not reached in krylov_dim
+   !> iterations. The Krylov basis is jac's workspace (no allocation per solve).
    subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
       type(lj_problem_type), intent(in) :: problem
-      type(jacobian_type), intent(in) :: jac
+      type(jacobian_type), intent(inout) :: jac
       real(wp), intent(in) :: dw(:), a(:), r1(:), r2
       real(wp), intent(out) :: x(:), y
       logical, intent(out) :: ok
@@ -446,19 +450,38 @@ contains
       integer, intent(out), optional :: iterations
       !> relative residual asked for (default 1e-11)
       real(wp), intent(in), optional :: tolerance
-      integer, parameter :: m = 40
+      real(wp), allocatable :: v(:, :)
+      integer :: its
       real(wp) :: rtol
-      real(wp), allocatable :: v(:, :), h(:, :), g(:), cs(:), sn(:), u(:), pu(:), yk(:)
+      rtol = 1.0e-11_wp
+      if (present(tolerance)) rtol = tolerance
+      call move_alloc(jac%basis, v)        ! out of jac while jac is read below
+      if (allocated(v)) then
+         if (size(v, 1) /= size(r1) + 1) deallocate (v)
+      end if
+      if (.not. allocated(v)) allocate (v(size(r1) + 1, krylov_dim + 1))
+      call gmres(problem, jac, dw, a, r1, r2, x, y, ok, its, rtol, v)
+      call move_alloc(v, jac%basis)
+      if (present(iterations)) iterations = its
+   end subroutine krylov_solve
+
+   !> krylov_solve's iteration, on the basis v (n + 1 by krylov_dim + 1).
+   subroutine gmres(problem, jac, dw, a, r1, r2, x, y, ok, iterations, rtol, v)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: dw(:), a(:), r1(:), r2, rtol
+      real(wp), intent(out) :: x(:), y, v(:, :)
+      logical, intent(out) :: ok
+      integer, intent(out) :: iterations
+      integer, parameter :: m = krylov_dim
+      real(wp) :: h(m + 1, m), g(m + 1), cs(m), sn(m), u(size(r1) + 1), pu(size(r1) + 1)
       real(wp) :: beta, tmp
       integer :: n, j, i, k
       n = problem%grid%n
-      allocate (v(n + 1, m + 1), h(m + 1, m), g(m + 1), cs(m), sn(m), u(n + 1), pu(n + 1))
-      rtol = 1.0e-11_wp
-      if (present(tolerance)) rtol = tolerance
       x = 0.0_wp
       y = 0.0_wp
       ok = .true.
-      if (present(iterations)) iterations = 0
+      iterations = 0
       v(1:n, 1) = r1
       v(n + 1, 1) = r2
       beta = norm2(v(:, 1))
@@ -489,22 +512,21 @@ contains
          g(j + 1) = -sn(j)*g(j)
          g(j) = cs(j)*g(j)
          k = j
-         if (present(iterations)) iterations = j
+         iterations = j
          if (abs(g(j + 1)) <= rtol*beta .or. h(j, j) == 0.0_wp) then
             ok = abs(g(j + 1)) <= rtol*beta
             exit
          end if
       end do
       if (.not. ok) return
-      allocate (yk(k))
       do i = k, 1, -1                                  ! back substitution
-         yk(i) = (g(i) - dot_product(h(i, i + 1:k), yk(i + 1:k)))/h(i, i)
+         g(i) = (g(i) - dot_product(h(i, i + 1:k), g(i + 1:k)))/h(i, i)
       end do
-      u = matmul(v(:, 1:k), yk)
+      u = matmul(v(:, 1:k), g(1:k))
       call precondition(problem, jac, a, u, pu)
       x = pu(1:n)
       y = pu(n + 1)
-   end subroutine krylov_solve
+   end subroutine gmres
 
    !> The bordered Jacobian at the current point times u.
    subroutine apply_jacobian(problem, jac, dw, a, u, ju)

@@ -62,11 +62,12 @@ program bench_lj
       call new_params(alpha, mu, params, status, msg)
       call report_status("parameters")
       t = seconds()
-      call lj_cycle(params, cyc, status, msg, estimate=.false.)
+      call one_cycle(lj_auto_n(params), points, factors)
       t = seconds() - t
       call report_status("automatic grid")
-      write (*, '(a,2g12.5,a,i0,a,f9.3,a)') "cycle at alpha, mu =", alpha, mu, &
-         " on the automatic N = ", cyc%n_period, ": ", t, " s (CPU)"
+      write (*, '(a,2g12.5,a,i0,a,f9.3,a,i0,a,i0,a)') "cycle at alpha, mu =", alpha, mu, &
+         " on the automatic N = ", cyc%n_period, ": ", t, " s (CPU; ", points, &
+         " points, ", factors, " factorisations)"
       stop
    end if
    call new_params(0.3_wp, 3.0_wp, params, status)
