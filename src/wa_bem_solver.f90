@@ -87,8 +87,10 @@ module wa_bem_solver
    !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long)
    integer, parameter :: coarse_min = 128, max_ratio = 8
 
-   !> Time cap of the automatic grid: one cycle at N = 2048 takes about two minutes on
-   !> one core (doc/accuracy-performance.md); a finer automatic grid is refused.
+   !> Time cap of the automatic grid: one cycle at N = 2048 takes 1.5 s at alpha 0.3, mu 3
+   !> but about 40 s at alpha 34.8, mu 21.9 (14 000 trace points: P* spans hundreds of
+   !> units in steps of at most dp_max) on one core (doc/accuracy-performance.md); a finer
+   !> automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
    !> Grid points the automatic N puts on the interaction zone
    real(wp), parameter :: points_per_zone = 12.0_wp
