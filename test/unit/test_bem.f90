@@ -10,6 +10,9 @@ module test_bem
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix
    use wa_bem_solver, only: use_two_grid, jacobian_type, factor_at, jacobian_free
+   use wa_bem_elastic, only: kernel_value
+   use wa_bem_fast, only: fft_plans_type, plans_create, plans_destroy, circulant_symbol, &
+      circulant_apply
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
@@ -23,6 +26,7 @@ contains
       testsuite = [ &
          new_unittest("ldl_inertia_and_solve", test_ldl), &
          new_unittest("stiffness_symbol", test_stiffness), &
+         new_unittest("circulant_on_the_even_half", test_even_circulant), &
          new_unittest("law_closed_forms", test_law), &
          new_unittest("bad_input", test_bad_input), &
          new_unittest("trace_stability_and_folds", test_trace), &
@@ -104,6 +108,36 @@ contains
       end do
       call check(error, abs(grid%fbar - 1.0_wp) < 1.0e-14_wp, "mean of 1 - cos")
    end subroutine test_stiffness
+
+   !> The stiffness applied to an even field by the cosine transform of its half period
+   !> (N/2 even: by a halfcomplex transform of length N/2; N/2 odd: FFTW's REDFT00; with
+   !> and without plans) against the dense folded matrix W K of the kernel's values.
+   subroutine test_even_circulant(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: sizes(4) = [8, 18, 64, 96]
+      type(bem_grid_type) :: grid
+      type(fft_plans_type) :: plans
+      real(wp), allocatable :: kw(:, :), symbol(:), x(:), y(:), ref(:)
+      integer :: i, j, np, status, pass
+      do i = 1, size(sizes)
+         np = sizes(i)
+         call new_grid(np, grid, status)
+         allocate (kw(grid%n, grid%n), symbol(0:np - 1), y(grid%n))
+         call stiffness_matrix(grid, kw)
+         call circulant_symbol(kernel_value(np, [(j, j = 0, np - 1)]), symbol)
+         x = [(exp(-3.0_wp*grid%x(j)) + 0.1_wp*sin(7.0_wp*j), j = 1, grid%n)]
+         ref = matmul(kw, x)/grid%w
+         do pass = 1, 2
+            if (pass == 2) call plans_create(plans, np, even=.true.)
+            call circulant_apply(plans, symbol, x, y)
+            call check(error, maxval(abs(y - ref)) < 1.0e-13_wp*np*maxval(abs(x)), &
+               "even circulant against W K")
+            if (allocated(error)) return
+         end do
+         call plans_destroy(plans)
+         deallocate (kw, symbol, y)
+      end do
+   end subroutine test_even_circulant
 
    !> LJ 3-9: phi(eps) = -dgamma, sigma(eps) = 0, peak 16/(9 sqrt 3) dgamma/eps at
    !> 3^(1/6) eps, slope = central difference; eps/Delta = (4 alpha^4)^(1/3)/mu.
