@@ -84,13 +84,15 @@ module wa_bem_solver
    !> mu 3: the two-grid trace takes 0.5 s at N = 512 against 0.7 s with the dense one)
    integer, parameter :: dense_max_unknowns = 129
    !> Coarse period of the two-grid preconditioner: N/8, at least 128 (a coarser grid
-   !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long)
+   !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long; N/16, or a
+   !> cap of 1024 at N = 16384, triples the trace's points through refused steps: 71 s
+   !> instead of 53 s at N = 16384, doc/accuracy-performance.md)
    integer, parameter :: coarse_min = 128, max_ratio = 8
 
    !> Time cap of the automatic grid: one cycle at N = 2048 takes 1.5 s at alpha 0.3, mu 3
-   !> but about 40 s at alpha 34.8, mu 21.9 (14 000 trace points: P* spans hundreds of
-   !> units in steps of at most dp_max) on one core (doc/accuracy-performance.md); a finer
-   !> automatic grid is refused.
+   !> and 2.7 s at alpha 34.8, mu 21.9 (680 trace points: P* spans hundreds of units, in
+   !> steps scaled by the law's peak tension) on one core (doc/accuracy-performance.md); a
+   !> finer automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
    !> Grid points the automatic N puts on the interaction zone
    real(wp), parameter :: points_per_zone = 12.0_wp
