@@ -12,7 +12,8 @@
 !> interpolated (the point's own a* is returned).
 module wa_bem_state
    use wa_kinds, only: wp
-   use wa_status, only: wa_ok, wa_invalid_argument, set_error
+   use wa_status, only: wa_ok
+   use wa_validate, only: check_range
    use wa_bem_solver, only: lj_problem_type
    use wa_bem_trace, only: lj_branch_type, lj_trace, lj_nearest_state
    use wa_bem_path, only: lj_profile
@@ -61,11 +62,8 @@ contains
       real(wp), allocatable :: xs(:), hs(:), ss(:)
       integer :: i, j, k, np
 
-      if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp)) then   ! before the costly trace
-         call set_error(wa_invalid_argument, "a_star is outside its valid range [0, 1/2]", &
-            status, errmsg)
-         return
-      end if
+      call check_range("a_star", a_star, 0.0_wp, 0.5_wp, "[0, 1/2]", status, errmsg)
+      if (status /= wa_ok) return                  ! before the costly trace
       call lj_trace(problem, branch, status, errmsg)
       if (status /= wa_ok) return
       call lj_nearest_state(branch, a_star, k, status, errmsg)
