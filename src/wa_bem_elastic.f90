@@ -44,7 +44,7 @@ contains
       if (n_period < 8 .or. mod(n_period, 2) /= 0) then
          write (text, '(i0)') n_period
          call set_error(wa_invalid_argument, "n = "//trim(text)//" is outside its valid "// &
-            "range: 0 (automatic) or even, >= 8 (grid points per period)", status, errmsg)
+            "range: 0 (automatic) or even and >= 8 (grid points per period)", status, errmsg)
          return
       end if
       grid%n_period = n_period
