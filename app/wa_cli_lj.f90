@@ -10,7 +10,7 @@ module wa_cli_lj
    use wa_text, only: int_text
    use wavyadhesion, only: params_type, new_params, lj_problem_type, lj_problem, lj_branch_type, &
       lj_trace, lj_cycle_type, lj_cycle, lj_paths, lj_path_type, status_message, wa_ok, &
-      wa_invalid_argument, lj_state_type, lj_state_at_a
+      wa_invalid_argument, wa_capacity_too_small, lj_state_type, lj_state_at_a
    use wa_cli_options, only: cli_options, given, option_message
    use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
    use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_end
@@ -107,7 +107,9 @@ contains
          "1.0264 sigma0", grid, profile]
    end function lj_notes
 
-   !> The problem of the options (a usage error for a bad --n or --profile-file).
+   !> The problem of the options (a usage error for a bad --n or --profile-file, and for a
+   !> grid cap exceeded: --n too large, or an automatic grid beyond its cap, which --n
+   !> resolves; the C face's WA_INVALID_ARGUMENT).
    subroutine lj_setup(tab, opts, params, problem, n, samples)
       type(table_type), intent(inout) :: tab
       type(cli_options), intent(in) :: opts
@@ -121,6 +123,7 @@ contains
       msg = ""
       ! samples unallocated (the sinusoid) is an absent optional argument
       call lj_problem(params, problem, status, msg, n, samples)
+      if (status == wa_capacity_too_small) status = wa_invalid_argument
       call check(tab, status, msg)
    end subroutine lj_setup
 
@@ -297,6 +300,8 @@ contains
       ! a bad --n or profile is a usage error before any work (other failures: per row)
       call new_params(alpha(1), mu(1), params, status, msg)
       if (status == wa_ok) call lj_problem(params, problem, status, msg, n, samples)
+      ! an --n beyond the grid's cap fails every row: a usage error too
+      if (status == wa_capacity_too_small .and. n /= 0) status = wa_invalid_argument
       if (status == wa_invalid_argument) call check(tab, status, msg)
       n_failed = 0
       call progress_start(progress, "critical")

@@ -4,6 +4,7 @@ profile=, and the errors. Small grids (n = 256) except where the automatic grid 
 point; each cycle at the automatic grid (N = 512 at alpha 0.3, mu 3) takes about a second.
 """
 import math
+import os
 
 import numpy as np
 import pytest
@@ -200,3 +201,25 @@ def test_one_point_is_the_facade_cycle():
     bad = wa.critical_forces("lj", 0.3, 0.0, n=64, errors="nan")
     assert int(bad.status) == 1 and "mu must be > 0" in bad.messages[()]
     assert math.isnan(float(bad.P_fc)) and int(bad.N) == 0
+
+
+@pytest.mark.skipif(os.name != "posix", reason="resource.RLIMIT_AS: POSIX")
+def test_profile_with_a_huge_n_allocates_nothing():
+    """n = 2^30 (even) is refused by the grid's cap before anything of its size is
+    allocated: the output arrays were sized by n (24 GB) and the grid allocated its N
+    points (4 GB: an abort under a memory limit). Run in a child under a 2 GB limit."""
+    import subprocess
+    import sys
+    code = ("import resource, wavyadhesion as wa\n"
+            "resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))\n"
+            "for n in (2**30, 2**31 - 2, 16386):\n"
+            "    try:\n"
+            "        wa.profile('lj', 0.3, 1.0, 0.2, n=n)\n"
+            "    except wa.WavyAdhesionError as e:\n"
+            "        assert '16384' in str(e), e\n"
+            "    else:\n"
+            "        raise SystemExit('accepted')\n"
+            "print('refused')\n")
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert res.returncode == 0 and res.stdout.strip() == "refused", res.stderr[-2000:]

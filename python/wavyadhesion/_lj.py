@@ -42,6 +42,8 @@ LJ_PATH_EVENTS = {3: "jump_start", 4: "jump_end", 5: "full_contact_reached",
 _TRACE_CAPACITY = 2048
 # A path holds at most 64 events (wa_bem_path)
 _PATH_CAPACITY = 64
+# The grid's cap: at most 16384 points per period (lj_problem)
+_GRID_CAP = 16384
 
 
 def is_lj(model) -> bool:
@@ -417,7 +419,10 @@ def lj_profile(alpha, mu, a_star, n=None, profile=None):
     mu = real_scalar(mu, "mu")
     a_star = real_scalar(a_star, "a_star")
     n, use, samples = lj_inputs(n, profile)
-    out = grown(_f.fa_lj_profile, max(n, 2048), 3, alpha, mu, n, use, samples, a_star)
+    # N points: n itself when it is a valid grid (at most the cap 16384), else at most
+    # 2048 (the automatic grid's cap); a bad n is refused by the library, never allocated
+    out = grown(_f.fa_lj_profile, n if 2048 < n <= _GRID_CAP else 2048, 3, alpha, mu, n,
+                use, samples, a_star)
     x, t, h, n_period, state, _, _ = out
     k = int(n_period)
     return x[:k].copy(), t[:k].copy(), h[:k].copy(), k, [float(v) for v in state]

@@ -1126,6 +1126,20 @@ def test_lj_profile_a_star_ends_and_subnormal(cli):
     assert res.returncode == 2 and "--a-star" in res.stderr and "[0, 1/2]" in res.stderr
 
 
+@pytest.mark.parametrize("args, needle", [
+    (["profile", "--model", "lj", "--a-star", "0.2", "--n", "100000"], "16384"),
+    (["branch", "--model", "lj", "--n", "20000"], "16384"),
+    (["critical", "--model", "lj", "--mu-range", "1:2:2", "--n", "20000"], "16384"),
+    (["path", "--model", "lj", "--alpha", "1e-6"], "pass n explicitly"),
+])
+def test_lj_grid_cap_is_a_usage_error(cli, args, needle):
+    """A grid cap exceeded (--n too large, or the automatic grid beyond its cap, which --n
+    resolves) is the caller's argument: exit 2 (it was 'output capacity too small', exit 1),
+    as the C face's WA_INVALID_ARGUMENT."""
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2 and needle in res.stderr and res.stdout == ""
+
+
 def test_lj_bad_profile_line_exits_2(cli, tmp_path):
     f = tmp_path / "bad.txt"
     f.write_text("0\n0.5\nabc\n1\n")

@@ -151,6 +151,16 @@ contains
       call lj_problem(params, problem, status, msg, n=32768)
       call check(error, status == wa_capacity_too_small, "memory cap")
       if (allocated(error)) return
+      ! refused before the grid's arrays are allocated (2^30 points aborted under a memory
+      ! limit: "Error allocating 4294967304 bytes"), odd or even
+      call lj_problem(params, problem, status, msg, n=2**30)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "16384") > 0 .and. &
+         .not. allocated(problem%grid%x), "n = 2^30: "//trim(msg))
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n=huge(1))
+      call check(error, status == wa_capacity_too_small .and. .not. allocated(problem%grid%x), &
+         "n = huge: "//trim(msg))
+      if (allocated(error)) return
       call new_params(0.3_wp, 30.0_wp, params, status)
       call lj_problem(params, problem, status, msg)
       call check(error, status == wa_capacity_too_small .and. index(msg, "2048") > 0, &
