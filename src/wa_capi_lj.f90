@@ -2,8 +2,8 @@
 !>
 !> The C interface, smooth adhesion (the self-consistent Lennard-Jones model): the cycle
 !> with its critical values and error estimates, the traced equilibrium curve and the
-!> gap and traction of the state at a given a* (declarations in include/wavyadhesion.h; the conventions in wa_capi). Each export is
-!> one call of its `*_core` routine.
+!> gap and traction of the state at a given a* (declarations in include/wavyadhesion.h;
+!> the conventions in wa_capi). Each export is one call of its `*_core` routine.
 module wa_capi_lj
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
