@@ -170,9 +170,10 @@ contains
             return
          end if
       end if
-      call new_grid(np, problem%grid, status, errmsg, profile)
+      if (np <= 2*(lj_max_unknowns - 1)) call new_grid(np, problem%grid, status, errmsg, profile)
       if (status /= wa_ok) return
-      if (problem%grid%n > lj_max_unknowns) then
+      ! (a larger n is refused before new_grid allocates its N points: n = 2^30 aborted)
+      if (np > 2*(lj_max_unknowns - 1) .or. problem%grid%n > lj_max_unknowns) then
          call set_error(wa_capacity_too_small, "lj: n gives more than 8193 unknowns (n <= "// &
             "16384 on an even profile, n <= 8192 otherwise)", status, errmsg)
          return

@@ -8,6 +8,7 @@ module test_bem
    use wa_bem_law, only: law_eval, law_potential, law_peak
    use wa_bem_path, only: lj_path_jump_start
    use wa_kinds, only: wp, pi
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix
    use wa_bem_solver, only: use_two_grid, jacobian_type, factor_at, jacobian_free
@@ -37,6 +38,7 @@ contains
          new_unittest("jkr_trend", test_jkr), &
          new_unittest("rigid_limit", test_rigid), &
          new_unittest("profile_means", test_profile), &
+         new_unittest("state_at_a", test_state_at_a), &
          new_unittest("shifted_profile_whole_period", test_shifted), &
          new_unittest("two_grid_against_dense", test_two_grid), &
          new_unittest("w_star_from_energies", test_w_star_energies), &
@@ -185,6 +187,16 @@ contains
       if (allocated(error)) return
       call lj_problem(params, problem, status, msg, n=32768)
       call check(error, status == wa_capacity_too_small, "memory cap")
+      if (allocated(error)) return
+      ! refused before the grid's arrays are allocated (2^30 points aborted under a memory
+      ! limit: "Error allocating 4294967304 bytes"), odd or even
+      call lj_problem(params, problem, status, msg, n=2**30)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "16384") > 0 .and. &
+         .not. allocated(problem%grid%x), "n = 2^30: "//trim(msg))
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n=huge(1))
+      call check(error, status == wa_capacity_too_small .and. .not. allocated(problem%grid%x), &
+         "n = huge: "//trim(msg))
       if (allocated(error)) return
       call new_params(0.3_wp, 30.0_wp, params, status)
       call lj_problem(params, problem, status, msg)
@@ -405,6 +417,63 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_profile
+
+   !> lj_state_at_a against the traced curve: the state is the load-stable point with a*
+   !> nearest the target (the rule recomputed here), its fields the lj_profile of that
+   !> point from x* = -1/2 with the traction's sign turned (compressive positive); a_star
+   !> outside [0, 1/2] or NaN is refused before any trace.
+   subroutine test_state_at_a(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      type(lj_state_type) :: st
+      real(wp), allocatable :: x(:), gap(:), traction(:)
+      real(wp) :: targets(4), bad(4), miss, nan
+      character(len=256) :: msg
+      integer :: status, i, k, t, best, j
+      targets = [0.0_wp, 0.13_wp, 0.3_wp, 0.5_wp]
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_problem(params, problem, status, n=64)
+      call lj_trace(problem, br, status)
+      allocate (x(64), gap(64), traction(64))
+      do t = 1, size(targets)
+         call lj_state_at_a(problem, targets(t), st, status)
+         call check(error, status == wa_ok .and. st%n_period == 64, "state status")
+         if (allocated(error)) return
+         best = 0
+         miss = huge(1.0_wp)
+         do k = 1, br%n
+            if (br%stable_load(k) .and. abs(br%a_star(k) - targets(t)) < miss) then
+               miss = abs(br%a_star(k) - targets(t))
+               best = k
+            end if
+         end do
+         call check(error, st%a_star == br%a_star(best) .and. st%p_star == br%p_star(best) &
+            .and. st%b_star == br%b_star(best) .and. st%gbar == br%gbar(best) .and. &
+            st%stable_load, "the nearest load-stable point")
+         if (allocated(error)) return
+         call lj_profile(problem, br%z(:, best), x, gap, traction)
+         do i = 1, 64
+            j = modulo(i - 1 + 32, 64) + 1
+            call check(error, st%gap(i) == gap(j) .and. st%traction(i) == -traction(j) .and. &
+               abs(st%x(i) - ((i - 1)/64.0_wp - 0.5_wp)) <= epsilon(1.0_wp), "fields")
+            if (allocated(error)) return
+         end do
+      end do
+      call check(error, st%a_star == 0.5_wp, "a* = 1/2 is full contact")
+      if (allocated(error)) return
+      nan = ieee_value(nan, ieee_quiet_nan)
+      bad = [nan, -tiny(1.0_wp), 0.5_wp + epsilon(1.0_wp), huge(1.0_wp)]
+      do t = 1, size(bad)
+         msg = ""
+         call lj_state_at_a(problem, bad(t), st, status, msg)
+         call check(error, status == wa_invalid_argument .and. index(msg, "a_star") == 1 .and. &
+            index(msg, "[0, 1/2]") > 0 .and. st%n_period == 0 .and. .not. allocated(st%x), &
+            "bad a_star: "//trim(msg))
+         if (allocated(error)) return
+      end do
+   end subroutine test_state_at_a
 
    !> The sinusoid sampled with a shift (not even about x = 0: solved on the whole period)
    !> gives the critical loads of the even half-period solution.
