@@ -19,7 +19,7 @@ module wa_bem_path
    use wa_bem_law, only: bem_law_type, lj_law, law_eval
    use wa_bem_elastic, only: full_period
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
-      point_info, lj_problem, metric_dot, jacobian_free
+      point_info, lj_problem, gap_energy, jacobian_free
    use wa_bem_trace, only: lj_branch_type, lj_trace, lj_trace_options, lj_point_at, &
       branch_append, lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
@@ -232,20 +232,17 @@ contains
    !> Walk from point i in direction dir along stable intervals while q moves in the sense
    !> `sense` (+1 rising, -1 falling); stops at a fold of q (returns its index), at the end
    !> of the branch, or where the interval turns unstable. Crossings of full contact are
-   !> recorded; the integral of P* dgbar* along the walk is accumulated.
-   subroutine walk(problem, branch, by, i, dir, path, stage, integral)
-      type(lj_problem_type), intent(in) :: problem
+   !> recorded.
+   subroutine walk(branch, by, i, dir, path, stage)
       type(lj_branch_type), intent(in) :: branch
       integer, intent(in) :: by, dir, stage
       integer, intent(inout) :: i
       type(lj_path_type), intent(inout) :: path
-      real(wp), intent(inout) :: integral
       integer :: j
       do
          j = i + dir
          if (j < 1 .or. j > branch%n) return
          if (.not. interval_stable(branch, by, min(i, j))) return
-         integral = integral + dir*interval_integral(problem, branch, min(i, j))
          i = j
          if (branch%event(i) == lj_event_full_contact) call record(path, stage, &
             merge(lj_path_full_contact_reached, lj_path_full_contact_left, &
@@ -253,31 +250,6 @@ contains
          if (fold_of(branch, by, i) /= 0) return
       end do
    end subroutine walk
-
-   !> The integral of P* dgbar* over interval [i, i+1] (cubic Hermite in the chord
-   !> parameter with the tangents of both ends; 3-point Gauss, exact for it).
-   pure function interval_integral(problem, branch, i) result(v)
-      type(lj_problem_type), intent(in) :: problem
-      type(lj_branch_type), intent(in) :: branch
-      integer, intent(in) :: i
-      real(wp) :: v, chord, tau, p, dg, h00, h10, h01, h11
-      real(wp), parameter :: x3(3) = [0.1127016653792583_wp, 0.5_wp, 0.8872983346207417_wp], &
-         w3(3) = [5.0_wp/18.0_wp, 8.0_wp/18.0_wp, 5.0_wp/18.0_wp]
-      integer :: k
-      chord = sqrt(metric_dot(problem, branch%z(:, i + 1) - branch%z(:, i), &
-         branch%z(:, i + 1) - branch%z(:, i)))
-      v = 0.0_wp
-      do k = 1, 3
-         tau = x3(k)
-         h00 = 2*tau**3 - 3*tau**2 + 1; h10 = tau**3 - 2*tau**2 + tau
-         h01 = -2*tau**3 + 3*tau**2; h11 = tau**3 - tau**2
-         p = h00*branch%p_star(i) + h10*chord*branch%dp(i) + h01*branch%p_star(i + 1) &
-            + h11*chord*branch%dp(i + 1)
-         dg = (6*tau**2 - 6*tau)*branch%gbar(i) + (3*tau**2 - 4*tau + 1)*chord*branch%dg(i) &
-            + (-6*tau**2 + 6*tau)*branch%gbar(i + 1) + (3*tau**2 - 2*tau)*chord*branch%dg(i + 1)
-         v = v + w3(k)*p*dg
-      end do
-   end function interval_integral
 
    subroutine record(path, stage, event, branch, i)
       type(lj_path_type), intent(inout) :: path
@@ -426,11 +398,10 @@ contains
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
       integer :: i, land, dir, jumps
-      real(wp) :: integral, pj
+      real(wp) :: pj
       logical :: landed
       type(lj_path_type) :: path
 
-      integral = 0.0_wp
       ! loading: land at P* = 0 on the first load-stable state along the curve
       call find_landing(problem, branch, by_load, 1, 1, 0.0_wp, land, status)
       if (status /= wa_ok .or. land == 0) then
@@ -449,7 +420,7 @@ contains
             exit
          end if
          dir = rising(branch, by_load, i, 1)
-         call walk(problem, branch, by_load, i, dir, path, lj_stage_loading, integral)
+         call walk(branch, by_load, i, dir, path, lj_stage_loading)
          if (reached_full_contact(path, lj_stage_loading)) then
             cycle%p_fc = path%p_star(path%n)
             cycle%fc_by_jump = .false.
@@ -484,7 +455,7 @@ contains
       i = branch%n
       do jumps = 1, 30
          dir = rising(branch, by_load, i, -1)
-         call walk(problem, branch, by_load, i, dir, path, lj_stage_unloading, integral)
+         call walk(branch, by_load, i, dir, path, lj_stage_unloading)
          if (fold_of(branch, by_load, i) /= -1) then
             call fail(wa_no_solution, "lj load path: unloading ended away from a minimum "// &
                "of P*", errmsg, status)
@@ -514,12 +485,28 @@ contains
       type(lj_cycle_type), intent(inout) :: cycle
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
+      type(jacobian_type) :: work
+      call gap_walks(problem, branch, cycle, work, status, errmsg)
+      call jacobian_free(work)
+   end subroutine gap_control
+
+   !> gap_control with the workspace work (FFT plans for the energies). The system is
+   !> conservative between jumps (dPi/dgbar* = -P* along the curve, Pi = gap_energy), so
+   !> W* = -oint P* dgbar* is the sum over the jumps of Pi(start) - Pi(end), both at the
+   !> same gbar*: exact, no quadrature along the walks, and 0 without a jump.
+   subroutine gap_walks(problem, branch, cycle, work, status, errmsg)
+      type(lj_problem_type), intent(in) :: problem
+      type(lj_branch_type), intent(inout) :: branch
+      type(lj_cycle_type), intent(inout) :: cycle
+      type(jacobian_type), intent(inout) :: work
+      integer, intent(out) :: status
+      character(len=*), intent(inout), optional :: errmsg
       integer :: i, jumps, stage, dir, sense
-      real(wp) :: integral
+      real(wp) :: lost, pi_start
       logical :: landed
       type(lj_path_type) :: path
 
-      integral = 0.0_wp
+      lost = 0.0_wp
       status = wa_ok
       do stage = lj_stage_approach, lj_stage_retraction
          if (stage == lj_stage_approach) then
@@ -528,7 +515,7 @@ contains
             i = branch%n; dir = -1; sense = 1
          end if
          do jumps = 1, max_path_jumps + 1
-            call walk(problem, branch, by_gap, i, dir, path, stage, integral)
+            call walk(branch, by_gap, i, dir, path, stage)
             if (i == 1 .or. i == branch%n) exit
             if (jumps > max_path_jumps) then      ! never a W* of a path cut short
                call fail(wa_not_converged, "lj gap path: more than 30 jumps on the "// &
@@ -541,17 +528,19 @@ contains
                   "extremum of gbar*", errmsg, status)
                return
             end if
+            pi_start = gap_energy(problem, work, branch%z(:, i))
             call jump(problem, branch, by_gap, stage, dir, i, path, landed, status)
             if (status /= wa_ok .or. .not. landed) then
                call fail(wa_no_solution, "lj gap path: no stable landing state after a jump", &
                   errmsg, status)
                return
             end if
+            lost = lost + (pi_start - gap_energy(problem, work, branch%z(:, i)))
          end do
       end do
       cycle%gap = path
-      cycle%w_star = -integral
-   end subroutine gap_control
+      cycle%w_star = lost
+   end subroutine gap_walks
 
    !> A jump at constant q from the fold at point i towards dir: recorded, landed on the
    !> first stable state found (i moves there) or not (landed false, i kept).

@@ -16,7 +16,7 @@ module wa_bem_solver
    use wa_status, only: wa_ok, wa_not_converged, wa_invalid_argument, wa_capacity_too_small, &
       set_error
    use wa_params, only: params_type, check_params
-   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_zero, law_peak
+   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_zero, law_peak, law_potential
    use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix, measure_below, &
       peak_value, kernel_value, full_period
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
@@ -29,7 +29,7 @@ module wa_bem_solver
    public :: lj_problem_type, jacobian_type, point_info_type
    public :: lj_problem, lj_auto_n, lj_zone_length, lj_max_unknowns, lj_max_auto_n
    public :: setup_operator, use_two_grid, jacobian_free, residual, factor_at, bordered_solve, newton, tangent_at, &
-      point_info, metric_dot, gap_constraint, load_constraint
+      point_info, metric_dot, gap_constraint, load_constraint, gap_energy
 
    !> The discretised problem: law, grid and the elastic stiffness W K.
    type :: lj_problem_type
@@ -84,13 +84,15 @@ module wa_bem_solver
    !> mu 3: the two-grid trace takes 0.5 s at N = 512 against 0.7 s with the dense one)
    integer, parameter :: dense_max_unknowns = 129
    !> Coarse period of the two-grid preconditioner: N/8, at least 128 (a coarser grid
-   !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long)
+   !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long; N/16, or a
+   !> cap of 1024 at N = 16384, triples the trace's points through refused steps: 71 s
+   !> instead of 53 s at N = 16384, doc/accuracy-performance.md)
    integer, parameter :: coarse_min = 128, max_ratio = 8
 
    !> Time cap of the automatic grid: one cycle at N = 2048 takes 1.5 s at alpha 0.3, mu 3
-   !> but about 40 s at alpha 34.8, mu 21.9 (14 000 trace points: P* spans hundreds of
-   !> units in steps of at most dp_max) on one core (doc/accuracy-performance.md); a finer
-   !> automatic grid is refused.
+   !> and 2.7 s at alpha 34.8, mu 21.9 (680 trace points: P* spans hundreds of units, in
+   !> steps scaled by the law's peak tension) on one core (doc/accuracy-performance.md); a
+   !> finer automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
    !> Grid points the automatic N puts on the interaction zone
    real(wp), parameter :: points_per_zone = 12.0_wp
@@ -279,8 +281,7 @@ contains
       n = problem%grid%n
       allocate (sig(n))
       if (.not. allocated(jac%dw)) allocate (jac%dw(n), jac%q(n))
-      if (jac%plans%np /= problem%grid%n_period .or. (jac%plans%even .neqv. problem%grid%even)) &
-         call plans_create(jac%plans, problem%grid%n_period, problem%grid%even)
+      call ensure_plans(problem, jac)
       call law_eval(problem%law, z(1:n), sig, jac%dw)
       if (problem%two_grid) then
          call twogrid_setup(full_period(problem%grid, jac%dw), problem%kc, problem%ratio, &
@@ -309,6 +310,41 @@ contains
       if (dot_product(problem%grid%w, jac%q) > 0.0_wp) jac%neg_gap = jac%neg_gap + 1
       jac%neg_gap = max(jac%neg_gap, 0)
    end subroutine factor_at
+
+   !> The FFT plans of problem's grid in jac (made where missing or of another grid).
+   subroutine ensure_plans(problem, jac)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: jac
+      if (jac%plans%np /= problem%grid%n_period .or. (jac%plans%even .neqv. problem%grid%even)) &
+         call plans_create(jac%plans, problem%grid%n_period, problem%grid%even)
+   end subroutine ensure_plans
+
+   !> The energy per period at fixed mean gap of state z (units p* Delta),
+   !>   Pi = (1/2) mean(u K u) + mean phi(h),   u = h - f,
+   !> E without its load term: along any curve of states dPi/dgbar* = -P*, so a jump at
+   !> constant gbar* dissipates Pi(start) - Pi(end) (doc/theory.md, "Smooth adhesion").
+   !> The stiffness product goes by FFT on u minus its mean (K annihilates constants, so
+   !> the mean gap's rounding does not enter); jac only lends its FFT plans (made here
+   !> where missing; the owner frees them with jacobian_free).
+   function gap_energy(problem, jac, z) result(e)
+      !> The problem the state belongs to
+      type(lj_problem_type), intent(in) :: problem
+      !> A workspace (its plans are made or reused)
+      type(jacobian_type), intent(inout) :: jac
+      !> A state (gaps at the unknown nodes, P*); only the gaps are read
+      real(wp), intent(in) :: z(:)
+      real(wp) :: e
+      real(wp), allocatable :: u(:), ku(:)
+      integer :: n
+      n = problem%grid%n
+      call ensure_plans(problem, jac)
+      allocate (u(n), ku(n))
+      u = z(1:n) - problem%grid%f
+      u = u - sum(problem%grid%w*u)/problem%grid%n_period
+      call stiffness_apply(problem, jac, u, ku)
+      e = (0.5_wp*dot_product(u, ku) + sum(problem%grid%w*law_potential(problem%law, z(1:n)))) &
+         /problem%grid%n_period
+   end function gap_energy
 
    !> S_frozen x + w y = r1, a(1:n) . x + a(n+1) y = r2 (S as factorised in jac).
    subroutine bordered_solve(problem, jac, a, r1, r2, x, y)

@@ -6,7 +6,9 @@
 !>
 !> Step control: a step is refused (and halved) when its corrector fails, when the
 !> tangent turns by more than max_turn (in the arclength metric) or when the load or
-!> the mean gap changes by more than dp_max, dg_max; the new tangent is oriented along
+!> the mean gap changes by more than dp_max, dg_max times the problem's scales of load
+!> and gap, max(1, half the law's peak tension) and max(1, the law's range) (so the
+!> trace's point count does not grow with them); the new tangent is oriented along
 !> the old one, so the trace cannot turn back on itself at a sharp fold.
 !>
 !> Inertia: from the factorisation at each event point and after it (dense
@@ -18,7 +20,7 @@ module wa_bem_trace
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_invalid_argument, wa_not_converged, wa_capacity_too_small, &
       set_error
-   use wa_bem_law, only: law_zero, law_peak, law_curvature
+   use wa_bem_law, only: law_zero, law_peak, law_curvature, law_eval
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
       bordered_solve, newton, tangent_at, point_info, metric_dot, gap_constraint, jacobian_free
    use wa_roots, only: brent_type, brent_init, brent_propose, brent_accept
@@ -59,7 +61,9 @@ module wa_bem_trace
 
    !> Continuation controls.
    type :: lj_trace_options
-      !> Largest turn of the tangent per step [rad]; largest change of P*, gbar* per step
+      !> Largest turn of the tangent per step [rad]; largest change of P*, gbar* per step in
+      !> units of the load scale max(1, sigma_peak/2) and the gap scale max(1, eps) of the
+      !> law (over p* and Delta: 1 and 1 unless the law is strong or long-ranged)
       real(wp) :: max_turn = 0.15_wp, dp_max = 0.05_wp, dg_max = 0.05_wp
       !> The trace starts with the crest gap at far_start times eps
       real(wp) :: far_start = 500.0_wp
@@ -161,13 +165,19 @@ contains
       type(lj_trace_options), intent(in), optional :: options
       type(lj_trace_options) :: opts
       type(trace_point) :: cur, nxt
-      real(wp) :: ds, turn, eps, p_fc
+      real(wp) :: ds, turn, eps, p_fc, p_scale, g_scale, peak, slope
       integer :: n, iters, n_before, factor_before
       logical :: accept, done
 
       if (present(options)) opts = options
       n = problem%grid%n
       eps = law_zero(problem%law)
+      ! the scales of the load and the mean gap along the trace: the fully adhered branch
+      ! holds a tension of the order of the peak (P_pf* = -236 at a peak of 237, alpha
+      ! 34.8, mu 21.9), and the gap varies on the law's range where that exceeds Delta
+      call law_eval(problem%law, law_peak(problem%law), peak, slope)
+      p_scale = max(1.0_wp, 0.5_wp*peak)
+      g_scale = max(1.0_wp, eps)
       branch%n_period = problem%grid%n_period
       branch%n_unknowns = n
       call far_point(problem, opts, cur, pre, branch%n_factor, status, errmsg)
@@ -178,15 +188,16 @@ contains
       p_fc = huge(1.0_wp)
       done = .false.
       do while (.not. done)
-         ds = min(ds, step_cap(cur%info, eps))
+         ds = min(ds, step_cap(cur%info, eps, max(p_scale, g_scale)))
          factor_before = branch%n_factor
          call advance(problem, cur, ds, nxt, pre, iters, branch%n_factor, status)
          accept = status == wa_ok
          if (accept) then
             turn = acos(max(-1.0_wp, min(1.0_wp, metric_dot(problem, cur%t, nxt%t))))
             accept = turn <= opts%max_turn .and. &
-               abs(nxt%info%p - cur%info%p) <= opts%dp_max .and. &
-               (abs(nxt%info%gbar - cur%info%gbar) <= opts%dg_max .or. cur%info%h_min > 2*eps)
+               abs(nxt%info%p - cur%info%p) <= opts%dp_max*p_scale .and. &
+               (abs(nxt%info%gbar - cur%info%gbar) <= opts%dg_max*g_scale .or. &
+               cur%info%h_min > 2*eps)
          end if
          if (.not. accept) then
             ds = 0.5_wp*ds
@@ -231,13 +242,14 @@ contains
    end subroutine trace_with
 
    !> Largest step from a point: far apart a quarter of the crest gap (the load varies on
-   !> that scale), else 0.1 (the other controls bound it).
-   pure function step_cap(info, eps) result(ds)
+   !> that scale), else 0.1 times the larger of the load and gap scales (the other
+   !> controls bound it).
+   pure function step_cap(info, eps, scale) result(ds)
       type(point_info_type), intent(in) :: info
-      real(wp), intent(in) :: eps
+      real(wp), intent(in) :: eps, scale
       real(wp) :: ds
       ds = max(0.25_wp*info%h_min, 4.0_wp*eps)
-      if (info%h_min < 4.0_wp*eps) ds = 0.1_wp
+      if (info%h_min < 4.0_wp*eps) ds = 0.1_wp*scale
    end function step_cap
 
    !> The first point: the crest gap far_start eps, solved at that mean gap; the

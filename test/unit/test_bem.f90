@@ -6,6 +6,7 @@
 module test_bem
    use wavyadhesion
    use wa_bem_law, only: law_eval, law_potential, law_peak
+   use wa_bem_path, only: lj_path_jump_start
    use wa_kinds, only: wp, pi
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
@@ -39,7 +40,9 @@ contains
          new_unittest("profile_means", test_profile), &
          new_unittest("state_at_a", test_state_at_a), &
          new_unittest("shifted_profile_whole_period", test_shifted), &
-         new_unittest("two_grid_against_dense", test_two_grid)]
+         new_unittest("two_grid_against_dense", test_two_grid), &
+         new_unittest("w_star_from_energies", test_w_star_energies), &
+         new_unittest("w_star_zero_and_scaled_steps", test_w_star_zero)]
    end subroutine collect_bem
 
    !> A = H diag(lambda) H (H a Householder reflector): inertia and solve.
@@ -536,5 +539,93 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_two_grid
+
+   !> W* = -oint P* dgbar* at alpha 0.3, mu 3, N = 256 is the sum over the gap path's jumps
+   !> of the energy at fixed mean gap dissipated by each: the same with the trace's step
+   !> limits halved (the quadrature it replaced moved by 8e-7 there), and the library's
+   !> energies against the equilibrium identity mean(u K u) = -mean((u - mean u) sigma(h))
+   !> (no stiffness product; K u = -(sigma + P*) at a state).
+   subroutine test_w_star_energies(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      type(lj_cycle_type) :: cyc(2)
+      type(lj_trace_options) :: opts
+      integer :: status, pass, k
+      real(wp) :: w
+      character(len=256) :: msg
+      call new_params(0.3_wp, 3.0_wp, params, status)
+      call lj_problem(params, problem, status, n=256)
+      do pass = 1, 2
+         if (pass == 2) then
+            opts%max_turn = 0.5_wp*opts%max_turn
+            opts%dp_max = 0.5_wp*opts%dp_max
+            opts%dg_max = 0.5_wp*opts%dg_max
+         end if
+         msg = ""
+         call lj_trace(problem, br, status, msg, opts)
+         if (status == wa_ok) call lj_paths(problem, br, cyc(pass), status, msg)
+         call check(error, status == wa_ok, "trace and paths: "//trim(msg))
+         if (allocated(error)) return
+      end do
+      call check(error, abs(cyc(1)%w_star - cyc(2)%w_star) < 1.0e-12_wp, &
+         "W* independent of the step limits")
+      if (allocated(error)) return
+      ! the branch of pass 2 with its inserted landing states: the identity's energies
+      w = 0.0_wp
+      do k = 1, cyc(2)%gap%n
+         if (cyc(2)%gap%event(k) /= lj_path_jump_start) cycle
+         w = w + energy(k) - energy(k + 1)
+      end do
+      call check(error, count(cyc(2)%gap%event(1:cyc(2)%gap%n) == lj_path_jump_start) == 4 &
+         .and. abs(w - cyc(2)%w_star) < 1.0e-9_wp*cyc(2)%w_star, "W* against the identity")
+   contains
+      !> Pi of the branch state of event k of the gap path, by the equilibrium identity.
+      function energy(k) result(e)
+         integer, intent(in) :: k
+         real(wp) :: e
+         real(wp), allocatable :: u(:), sig(:), slope(:)
+         integer :: i, n
+         n = problem%grid%n
+         i = findloc(br%gbar(1:br%n) == cyc(2)%gap%gbar(k) .and. &
+            br%p_star(1:br%n) == cyc(2)%gap%p_star(k), .true., dim=1)
+         allocate (u(n), sig(n), slope(n))
+         call law_eval(problem%law, br%z(1:n, i), sig, slope)
+         u = br%z(1:n, i) - problem%grid%f
+         u = u - sum(problem%grid%w*u)/problem%grid%n_period
+         e = sum(problem%grid%w*(-0.5_wp*u*sig + law_potential(problem%law, br%z(1:n, i)))) &
+            /problem%grid%n_period
+      end function energy
+   end subroutine test_w_star_energies
+
+   !> Cycles without a jump under gap control have W* = 0 exactly (not rounding); a
+   !> long-ranged law (eps/Delta 23 at alpha 3, mu 0.3; 3400 at alpha 10, mu 0.01) is traced
+   !> in steps of its own gap scale: about 100 points (1131 at alpha 3, mu 0.3 and more than
+   !> max_points at alpha 10, mu 0.01 in steps of at most 0.05 in gbar*).
+   subroutine test_w_star_zero(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      type(lj_cycle_type) :: cyc
+      integer :: status, k
+      real(wp), parameter :: cases(2, 2) = reshape([3.0_wp, 0.3_wp, 10.0_wp, 0.01_wp], [2, 2])
+      character(len=256) :: msg
+      do k = 1, 2
+         call new_params(cases(1, k), cases(2, k), params, status)
+         call lj_problem(params, problem, status, n=64)
+         msg = ""
+         call lj_trace(problem, br, status, msg)
+         if (status == wa_ok) call lj_paths(problem, br, cyc, status, msg)
+         call check(error, status == wa_ok, "trace and paths: "//trim(msg))
+         if (allocated(error)) return
+         call check(error, cyc%w_star == 0.0_wp .and. &
+            .not. any(cyc%gap%event(1:cyc%gap%n) == lj_path_jump_start), "W* = 0, no jump")
+         if (allocated(error)) return
+         call check(error, br%n < 200, "points of a long-ranged law's trace")
+         if (allocated(error)) return
+      end do
+   end subroutine test_w_star_zero
 
 end module test_bem
