@@ -146,3 +146,37 @@ def test_profile_with_a_sample_not_finite_is_refused():
     for bad in (np.nan, np.inf):
         with pytest.raises(wa.InvalidArgumentError, match="profile"):
             wa.critical_forces("lj", 0.3, 3.0, n=16, profile=[0.0, bad, 2.0, 1.0])
+
+
+def test_p_fc_peak_is_the_snap_where_dw_jumps(path_auto):
+    """alpha 0.3, mu 3: DW reaches full contact by a jump; LJ's snap lands with every gap
+    within the peak tension's 3^(1/6) eps, so P_fc_peak (b* = 1/2) is its snap load, by a
+    jump, and within 0.2 % of DW's and MD's P_fc (the paper's Fig. 5 comparison), while
+    LJ's P_fc (a* = 1/2) is 0.996."""
+    p = path_auto
+    assert wa.load_path("dw", 0.3, 3.0).fc_mechanism != "gradual"
+    assert p.fc_peak_by_jump and p.P_fc_peak == p.P_snap and 0 < p.P_fc_peak_err < 1e-4
+    for model in ("dw", "md"):
+        assert p.P_fc_peak == pytest.approx(float(wa.critical_forces(model, 0.3, 3.0).P_fc),
+                                            rel=2e-3)
+    c = wa.critical_forces("lj", 0.3, 3.0)
+    assert c.P_fc_peak == p.P_fc_peak and c.P_fc_peak_err == p.P_fc_peak_err
+
+
+def test_p_fc_peak_without_a_jump_lies_on_the_traced_curve():
+    """alpha 0.3, mu 1: the snap (0.3988) lands short of b* = 1/2, which loading then
+    reaches gradually: P_fc_peak lies in the load-stable interval of the traced curve where
+    the largest gap falls to 3^(1/6) eps (found here from the branch), near its linear
+    interpolation."""
+    p = wa.load_path("lj", 0.3, 1.0)
+    assert not p.fc_peak_by_jump and p.P_snap < p.P_fc_peak < p.P_fc
+    b = wa.trace_branch("lj", 0.3, 1.0, n=p.N)
+    h_peak = 3 ** (1 / 6) * (4 * 0.3**4) ** (1 / 3) / 1.0
+    i = next(k for k in range(len(b) - 1)
+             if b.stable[k] and b.stable[k + 1] and b.P_star[k] >= p.P_snap
+             and b.h_max[k] > h_peak >= b.h_max[k + 1])
+    lo, hi = sorted((b.P_star[i], b.P_star[i + 1]))
+    assert lo <= p.P_fc_peak <= hi
+    t = (b.h_max[i] - h_peak) / (b.h_max[i] - b.h_max[i + 1])
+    assert p.P_fc_peak == pytest.approx(b.P_star[i] + t * (b.P_star[i + 1] - b.P_star[i]),
+                                        abs=0.1 * (hi - lo) + 1e-12)

@@ -28,7 +28,7 @@ from ._args import count_in, float_array, model_code, model_name, C_INT_MAX
 from ._energy import energy_lost
 from ._errors import CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError
 from ._lj import LJ_MAX_N, lj_critical_forces
-from ._loadpath import critical_forces
+from ._loadpath import MECHANISMS, critical_forces
 from ._parallel import make_progress
 
 __all__ = ["QUANTITIES", "CELL_STATUSES", "ModelErrorMap", "model_error_map"]
@@ -92,6 +92,9 @@ class ModelErrorMap:
     status : dict of str -> numpy.ndarray of str
         Per model: "unresolved" where LJ is, "failed" where LJ or the model failed,
         else "ok".
+    fc_mechanism : dict of str -> numpy.ndarray of str
+        Per model, how its loading reaches full contact (:data:`MECHANISMS`: "gradual"
+        or a jump; "" where it failed).
     messages : dict of (source, i, j) -> str
         The message of every failed or unresolved cell (source "lj" or the model name).
     """
@@ -108,6 +111,7 @@ class ModelErrorMap:
     rel_error: Dict[Tuple[str, str], np.ndarray]
     resolved: Dict[Tuple[str, str], np.ndarray]
     status: Dict[str, np.ndarray]
+    fc_mechanism: Dict[str, np.ndarray]
     messages: Dict[Tuple[str, int, int], str] = field(default_factory=dict)
 
     @property
@@ -285,7 +289,7 @@ def model_error_map(alpha: ArrayLike, mu: ArrayLike, *, models: Sequence[str] = 
         QUANTITIES + ("P_fc_contact", "P_snap"))}
     lj_err = {q: lj_e[:, c].reshape(shape) for c, q in enumerate(QUANTITIES)}
 
-    values, rel_error, resolved, status = {}, {}, {}, {}
+    values, rel_error, resolved, status, mechanism = {}, {}, {}, {}, {}
     for model in names:
         cf = critical_forces(model, A, M, errors="nan", executor=executor)
         el = energy_lost(model, A, M, errors="nan", executor=executor)
@@ -294,6 +298,9 @@ def model_error_map(alpha: ArrayLike, mu: ArrayLike, *, models: Sequence[str] = 
             messages[model, int(key[0]), int(key[1])] = text
         st = np.where(lj_status == "ok", np.where(model_ok, "ok", "failed"), lj_status)
         status[model] = st.astype(str)
+        codes = np.asarray(cf.fc_mechanism).reshape(shape)
+        mechanism[model] = np.array([MECHANISMS[c] if 0 <= c < len(MECHANISMS) else ""
+                                     for c in codes.ravel()]).reshape(shape)
         ok = status[model] == "ok"
         for q, v in zip(QUANTITIES, (cf.P_fc, cf.P_pf, el.W_star)):
             v = np.asarray(v, dtype=np.float64).reshape(shape)
@@ -313,4 +320,5 @@ def model_error_map(alpha: ArrayLike, mu: ArrayLike, *, models: Sequence[str] = 
             rel_error[model, q] = rel
             resolved[model, q] = res
     return ModelErrorMap(a_ax, m_ax, names, lj, lj_err, lj_N.reshape(shape), lj_status,
-                         lj_seconds.reshape(shape), values, rel_error, resolved, status, dict(sorted(messages.items())))
+                         lj_seconds.reshape(shape), values, rel_error, resolved, status,
+                         mechanism, dict(sorted(messages.items())))
