@@ -60,7 +60,9 @@ module wa_bem_trace
    !> Continuation controls.
    type :: lj_trace_options
       !> Largest turn of the tangent per step [rad]; largest change of P*, gbar* per step
-      !> (dg_max in units of max(Delta, eps): the law's range where it exceeds the amplitude)
+      !> (dp_max relative where |P*| > 1: the adhered branch of a large alpha runs to
+      !> P* ~ -100; dg_max in units of max(Delta, eps): the law's range where it exceeds
+      !> the amplitude)
       real(wp) :: max_turn = 0.15_wp, dp_max = 0.05_wp, dg_max = 0.05_wp
       !> The trace starts with the crest gap at far_start times eps
       real(wp) :: far_start = 500.0_wp
@@ -186,7 +188,7 @@ contains
          if (accept) then
             turn = acos(max(-1.0_wp, min(1.0_wp, metric_dot(problem, cur%t, nxt%t))))
             accept = turn <= opts%max_turn .and. &
-               abs(nxt%info%p - cur%info%p) <= opts%dp_max .and. &
+               abs(nxt%info%p - cur%info%p) <= opts%dp_max*max(1.0_wp, abs(cur%info%p)) .and. &
                (abs(nxt%info%gbar - cur%info%gbar) <= opts%dg_max*max(1.0_wp, eps) .or. &
                cur%info%h_min > 2*eps)
          end if
@@ -233,15 +235,15 @@ contains
    end subroutine trace_with
 
    !> Largest step from a point: far apart a quarter of the crest gap (the load varies on
-   !> that scale), else 0.1 (the other controls bound it) times the law's range where it
-   !> exceeds the amplitude (eps > Delta, small mu: the gaps then close over many eps,
-   !> and steps of 0.1 Delta would take ~1e5 points).
+   !> that scale), else 0.1 (the other controls bound it) times the larger of the law's
+   !> range (eps > Delta, small mu: the gaps then close over many eps, and steps of 0.1
+   !> Delta would take ~1e5 points) and |P*| (large alpha: loads of order 100).
    pure function step_cap(info, eps) result(ds)
       type(point_info_type), intent(in) :: info
       real(wp), intent(in) :: eps
       real(wp) :: ds
       ds = max(0.25_wp*info%h_min, 4.0_wp*eps)
-      if (info%h_min < 4.0_wp*eps) ds = 0.1_wp*max(1.0_wp, eps)
+      if (info%h_min < 4.0_wp*eps) ds = 0.1_wp*max(1.0_wp, eps, abs(info%p))
    end function step_cap
 
    !> The first point: the crest gap far_start eps, solved at that mean gap; the
