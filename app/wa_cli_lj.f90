@@ -9,8 +9,8 @@ module wa_cli_lj
    use wa_kinds, only: wp
    use wa_text, only: int_text
    use wavyadhesion, only: params_type, new_params, lj_problem_type, lj_problem, lj_branch_type, &
-      lj_trace, lj_cycle_type, lj_cycle, lj_paths, lj_path_type, lj_profile, status_message, wa_ok, &
-      wa_invalid_argument, lj_nearest_state
+      lj_trace, lj_cycle_type, lj_cycle, lj_paths, lj_path_type, status_message, wa_ok, &
+      wa_invalid_argument, wa_capacity_too_small, lj_state_type, lj_state_at_a
    use wa_cli_options, only: cli_options, given, option_message
    use wa_cli_table, only: table_type, add_value, write_header, write_row, format_real
    use wa_cli_progress, only: progress_type, progress_start, progress_step, progress_end
@@ -107,7 +107,9 @@ contains
          "1.0264 sigma0", grid, profile]
    end function lj_notes
 
-   !> The problem of the options (a usage error for a bad --n or --profile-file).
+   !> The problem of the options (a usage error for a bad --n or --profile-file, and for a
+   !> grid cap exceeded: --n too large, or an automatic grid beyond its cap, which --n
+   !> resolves; the C face's WA_INVALID_ARGUMENT).
    subroutine lj_setup(tab, opts, params, problem, n, samples)
       type(table_type), intent(inout) :: tab
       type(cli_options), intent(in) :: opts
@@ -119,11 +121,9 @@ contains
       integer :: status
       call lj_inputs(tab, opts, n, samples)
       msg = ""
-      if (allocated(samples)) then
-         call lj_problem(params, problem, status, msg, n, samples)
-      else
-         call lj_problem(params, problem, status, msg, n)
-      end if
+      ! samples unallocated (the sinusoid) is an absent optional argument
+      call lj_problem(params, problem, status, msg, n, samples)
+      if (status == wa_capacity_too_small) status = wa_invalid_argument
       call check(tab, status, msg)
    end subroutine lj_setup
 
@@ -148,11 +148,7 @@ contains
       integer :: n
       n = 0
       if (given(opts, "--n")) n = opts%n_points
-      if (allocated(samples)) then
-         call lj_cycle(params, cycle, status, msg, n, samples)
-      else
-         call lj_cycle(params, cycle, status, msg, n)
-      end if
+      call lj_cycle(params, cycle, status, msg, n, samples)
    end subroutine cycle_of
 
    !> branch --model lj: the traced curve from far apart to full contact.
@@ -180,10 +176,8 @@ contains
       if (status /= wa_ok) then                      ! the curve is still written
          cycle%p_fc = err(1); cycle%p_pf = err(1); cycle%w_star = err(1)
          msg = "(the paths failed: "//trim(msg)//")"
-      else if (allocated(samples)) then
-         call lj_cycle(params, coarse, status, msg, b%n_period/2, samples, estimate=.false.)
       else
-         call lj_cycle(params, coarse, status, msg, b%n_period/2, estimate=.false.)
+         call lj_cycle(params, coarse, status, msg, b%n_period/2, samples, estimate=.false.)
       end if
       if (status == wa_ok) then
          err = abs([cycle%p_fc - coarse%p_fc, cycle%p_pf - coarse%p_pf, &
@@ -305,11 +299,9 @@ contains
       call lj_inputs(tab, opts, n, samples)
       ! a bad --n or profile is a usage error before any work (other failures: per row)
       call new_params(alpha(1), mu(1), params, status, msg)
-      if (status == wa_ok .and. allocated(samples)) then
-         call lj_problem(params, problem, status, msg, n, samples)
-      else if (status == wa_ok) then
-         call lj_problem(params, problem, status, msg, n)
-      end if
+      if (status == wa_ok) call lj_problem(params, problem, status, msg, n, samples)
+      ! an --n beyond the grid's cap fails every row: a usage error too
+      if (status == wa_capacity_too_small .and. n /= 0) status = wa_invalid_argument
       if (status == wa_invalid_argument) call check(tab, status, msg)
       n_failed = 0
       call progress_start(progress, "critical")
@@ -398,19 +390,18 @@ contains
    end function grid_list
 
    !> profile --model lj --a-star X: gap and traction over the period of the traced state
-   !> with a* nearest X (among the load-stable states when there are any), at the N grid
-   !> nodes, x* from -1/2.
+   !> with a* nearest X (among the load-stable states when there are any; lj_state_at_a),
+   !> at the N grid nodes, x* from -1/2.
    subroutine run_lj_profile(opts, params, tab)
       type(cli_options), intent(in) :: opts
       type(params_type), intent(in) :: params
       type(table_type), intent(inout) :: tab
       type(lj_problem_type) :: problem
-      type(lj_branch_type) :: b
-      real(wp), allocatable :: samples(:), x(:), gap(:), sigma(:)
+      type(lj_state_type) :: state
+      real(wp), allocatable :: samples(:)
       character(len=256) :: msg
       real(wp) :: a_target
-      integer :: i, k, n, np, status
-      logical :: any_stable
+      integer :: i, n, status
 
       if (.not. allocated(opts%a_star)) call usage_error(tab, "profile needs --a-star X")
       a_target = single(tab, opts%a_star, "--a-star")
@@ -420,31 +411,24 @@ contains
          "--model lj (its states have no interaction-zone edge)")
       call lj_setup(tab, opts, params, problem, n, samples)
       msg = ""
-      call lj_trace(problem, b, status, msg)
+      call lj_state_at_a(problem, a_target, state, status, msg)
       call check(tab, status, msg)
-      call lj_nearest_state(b, a_target, k, status, msg, any_stable)
-      call check(tab, status, msg)
-      np = b%n_period
-      allocate (x(np), gap(np), sigma(np))
-      call lj_profile(problem, b%z(:, k), x, gap, sigma)
-      call add_value(tab, "a_star", [b%a_star(k)])
-      call add_value(tab, "b_star", [b%b_star(k)])
-      call add_value(tab, "P_star", [b%p_star(k)])
-      call add_value(tab, "gbar", [b%gbar(k)])
-      call add_value(tab, "N", [real(np, wp)], integers=.true.)
+      call add_value(tab, "a_star", [state%a_star])
+      call add_value(tab, "b_star", [state%b_star])
+      call add_value(tab, "P_star", [state%p_star])
+      call add_value(tab, "gbar", [state%gbar])
+      call add_value(tab, "N", [real(state%n_period, wp)], integers=.true.)
       call write_header(tab, "gap and traction of one state of the smooth (Lennard-Jones) "// &
          "model", "lj", "x_star traction gap", params, [character(len=160) :: &
-         lj_notes(opts, np, samples), &
+         lj_notes(opts, state%n_period, samples), &
          "state: the traced "//trim(merge("load-stable state ", "state             ", &
-         any_stable))//" with a* nearest --a-star", &
-         "a_star = "//format_real(b%a_star(k))//"  b_star = "//format_real(b%b_star(k)), &
-         "P_star = "//format_real(b%p_star(k))//"  gbar = "//format_real(b%gbar(k))// &
+         state%stable_load))//" with a* nearest --a-star", &
+         "a_star = "//format_real(state%a_star)//"  b_star = "//format_real(state%b_star), &
+         "P_star = "//format_real(state%p_star)//"  gbar = "//format_real(state%gbar)// &
          " (mean gap over Delta)", &
          "traction: p/p* (positive = compressive); gap: h/Delta; at the N grid nodes"])
-      ! x* = j/N for j = 0..N-1, written from -1/2 (j = N/2) on, as the other models' profiles
-      do i = 1, np
-         k = modulo(i - 1 + np/2, np) + 1
-         call write_row(tab, [x(k) - merge(1.0_wp, 0.0_wp, x(k) >= 0.5_wp), -sigma(k), gap(k)])
+      do i = 1, state%n_period             ! from x* = -1/2, as the other models' profiles
+         call write_row(tab, [state%x(i), state%traction(i), state%gap(i)])
       end do
    end subroutine run_lj_profile
 

@@ -178,10 +178,18 @@ contains
             "--model lj: the grid)"
       else if (given(opts, "--profile-file") .and. opts%model /= model_lj) then
          error = "--profile-file is only for --model lj"
-      else if (opts%model == model_lj .and. (opts%command == "point" .or. &
-            opts%command == "map" .or. opts%command == "gaplaw")) then
-         error = opts%command//" --model lj is not available in this version (lj: branch, "// &
-            "path, critical, profile)"
+      else if (opts%model == model_lj .and. opts%command == "point") then
+         error = "point --model lj is not available: a state at given a* is drawn by "// &
+            "'profile --model lj --a-star X' (the traced state with a* nearest X), the curve "// &
+            "P*(a*) by 'branch --model lj'"
+      else if (opts%model == model_lj .and. opts%command == "map") then
+         error = "map --model lj is not available: the adhesion map is the mechanism map of "// &
+            "--model dw or md; LJ's critical values over a grid: 'critical --model lj "// &
+            "--alpha A[,A...] --mu-range LO:HI:N'"
+      else if (opts%model == model_lj .and. opts%command == "gaplaw") then
+         error = "gaplaw --model lj is not available: LJ's gap law is its traced curve "// &
+            "P*(gbar*), 'branch --model lj' (columns P_star, gbar, stable_gap), with the "// &
+            "jumps of 'path --model lj --control gap'"
       else if (given(opts, "--gbar-range") .and. opts%command /= "gaplaw") then
          error = "--gbar-range is only for the gaplaw subcommand"
       else if (opts%command == "gaplaw" .and. .not. given(opts, "--gbar-range")) then

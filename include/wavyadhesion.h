@@ -45,8 +45,8 @@ extern "C" {
 #define WA_MODEL_DW 2
 #define WA_MODEL_MD 3
 /* The smooth (Lennard-Jones) model: the code of the command line's `--model lj`; its
-   functions are wa_lj_cycle and wa_lj_trace (the functions taking a model argument accept
-   0-3 only). */
+   functions are wa_lj_cycle, wa_lj_trace and wa_lj_profile (the functions taking a model
+   argument accept 0-3 only). */
 #define WA_MODEL_LJ 4
 
 /* The supported parameter domain (alpha_min, alpha_max, mu_min, mu_max in the Fortran
@@ -357,6 +357,24 @@ int wa_lj_trace(double alpha, double mu, int n, int n_profile, const double *pro
                 int capacity, double *P_star, double *gbar, double *a_star,
                 double *b_star, int *stable_load, int *stable_gap, int *event,
                 int *n_points, int *n_used, char *message, int message_capacity);
+
+/* The gap and traction of the state at a_star (in [0, 1/2]; a* is half the measure of
+   {h <= eps}, the contact): the traced state with a* nearest a_star among the
+   load-stable points of the curve (all points when none is load-stable; the first in the
+   order of the trace on a tie), so its own a* (state[0]) may differ from a_star by up to
+   the trace's spacing. x_star[i] = i/N - 1/2, traction[i] = p/p* (positive =
+   compressive) and gap[i] = h/Delta at the N grid nodes, i < N; state (NULL allowed)
+   receives a*, b*, P*, gbar* of the state; *n_points = N (<= 16384, the grid cap). n: 0
+   or even, >= 8. When N exceeds capacity the first capacity points are written, the
+   state and *n_points too, and WA_CAPACITY_TOO_SMALL is returned (capacity 0 with NULL
+   arrays asks for N, at the cost of the whole trace). WA_INVALID_ARGUMENT: alpha, mu, n,
+   n_profile, a profile sample, a_star (NaN or outside [0, 1/2]), capacity < 0, n_points
+   NULL or an array NULL while capacity > 0. On any other failure *n_points = 0, state is
+   NaN and the arrays are not written. */
+int wa_lj_profile(double alpha, double mu, int n, int n_profile, const double *profile,
+                  double a_star, int capacity, double *x_star, double *traction,
+                  double *gap, double *state, int *n_points, char *message,
+                  int message_capacity);
 
 /* 0.2 compatibility: removed in 0.4 */
 /* The 0.2 names besides the functions above, each the function above with the 0.2

@@ -39,10 +39,12 @@ contains
       character(len=*), intent(inout), optional :: errmsg
       real(wp), intent(in), optional :: profile(:)
       integer :: i, nn
+      character(len=12) :: text
 
       if (n_period < 8 .or. mod(n_period, 2) /= 0) then
-         call set_error(wa_invalid_argument, "n = grid points per period must be even and "// &
-            ">= 8", status, errmsg)
+         write (text, '(i0)') n_period
+         call set_error(wa_invalid_argument, "n = "//trim(text)//" is outside its valid "// &
+            "range: 0 (automatic) or even and >= 8 (grid points per period)", status, errmsg)
          return
       end if
       grid%n_period = n_period

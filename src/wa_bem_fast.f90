@@ -6,13 +6,16 @@
 !> that needs no dense factorisation of the fine grid: Chebyshev-Jacobi smoothing (one
 !> FFT product per step) and a coarse-grid correction by the Galerkin operator P^T A P
 !> (P: periodic linear interpolation; P^T K P is circulant, P^T diag P tridiagonal),
-!> factorised densely on the coarse grid. Everything acts on the whole period; an even
-!> field is unfolded first and the coarse system folded to its even half.
+!> factorised densely on the coarse grid. An uneven field acts on the whole period; an
+!> even one on its half (nodes 0..N/2), where the circulant is applied by the type-I
+!> cosine transform (the DFT of an even sequence: half the length, real) and the coarse
+!> system is folded to its even half.
 module wa_bem_fast
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_double
-   use wa_kinds, only: wp
+   use wa_kinds, only: wp, pi
    use wa_fftw, only: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
-      fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r
+      fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r, &
+      fftw_redft00
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    implicit none
    private
@@ -20,13 +23,19 @@ module wa_bem_fast
    public :: fft_plans_type, plans_create, plans_destroy, circulant_symbol, circulant_apply
    public :: twogrid_type, coarse_stiffness, twogrid_setup, twogrid_apply
 
-   !> The FFTW plans of one period length, owned by the caller's workspace.
+   !> The FFTW plans of one period length, owned by the caller's workspace: halfcomplex
+   !> there and back on the whole period, or (even) one cosine transform of the half: for
+   !> N/2 even by a halfcomplex transform of length N/2 (dct1, with the tables of
+   !> sin and cos(pi j/(N/2))), else FFTW's own.
    type :: fft_plans_type
       integer :: np = 0
+      logical :: even = .false.
       type(c_ptr) :: fwd = c_null_ptr, bwd = c_null_ptr
+      real(wp), allocatable :: sn(:), cs(:)
    end type fft_plans_type
 
-   !> A two-grid preconditioner at one state: fine slope, Jacobi scaling, coarse factor.
+   !> A two-grid preconditioner at one state: fine slope, Jacobi scaling (on the half
+   !> period where even), coarse factor.
    type :: twogrid_type
       integer :: np = 0, nc = 0, ratio = 0
       logical :: even = .true.
@@ -36,22 +45,46 @@ module wa_bem_fast
 
    !> Chebyshev smoothing: degree, and the interval of the Jacobi-scaled spectrum it damps
    !> (the upper end bounds (N/2 + d)/(N/4 + d); the lower end, times the grid ratio, is
-   !> the scaled symbol at the coarse grid's Nyquist mode)
-   integer, parameter :: cheb_degree = 3
+   !> the scaled symbol at the coarse grid's Nyquist mode). Degree 2 (four FFT products per
+   !> application, six at degree 3) needs more GMRES iterations and refactorisations but
+   !> is faster overall: the cycle at N = 512 0.31 s against 0.36 s, N = 4096 3.5 s
+   !> against 3.8 s (alpha 0.3, mu 3)
+   integer, parameter :: cheb_degree = 2
    real(wp), parameter :: cheb_top = 2.2_wp, cheb_bottom_ratio = 1.5_wp
 
 contains
 
-   !> Plans for the halfcomplex transforms of length np (FFTW_ESTIMATE: no trial runs).
-   subroutine plans_create(plans, np)
+   !> Plans for the circulants of period np (FFTW_ESTIMATE: no trial runs; measured
+   !> planning costs more than the whole cycle at N = 512): the halfcomplex transforms of
+   !> length np, or (even) the cosine transform of length np/2 + 1 (FFTW's REDFT00 takes
+   !> a third of the time of the halfcomplex pair at N = 16384, but allocates its buffers
+   !> at every call: dct1 does not).
+   subroutine plans_create(plans, np, even)
       type(fft_plans_type), intent(inout) :: plans
       integer, intent(in) :: np
+      !> the fields are even, given on the half period (default false)
+      logical, intent(in), optional :: even
       real(c_double), allocatable :: x(:), y(:)
+      integer :: m, j
       call plans_destroy(plans)
-      allocate (x(np), y(np))
+      if (present(even)) plans%even = even
       call fftw_make_planner_thread_safe()
-      plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
-      plans%bwd = fftw_plan_r2r_1d(np, y, x, fftw_hc2r, ior(fftw_estimate, fftw_unaligned))
+      if (plans%even .and. mod(np, 4) == 0) then
+         m = np/2
+         allocate (x(m), y(m))
+         plans%fwd = fftw_plan_r2r_1d(m, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+         allocate (plans%sn(0:m - 1), plans%cs(0:m - 1))
+         plans%sn = [(sin(pi*j/m), j = 0, m - 1)]
+         plans%cs = [(cos(pi*j/m), j = 0, m - 1)]
+      else if (plans%even) then
+         allocate (x(np/2 + 1), y(np/2 + 1))
+         plans%fwd = fftw_plan_r2r_1d(np/2 + 1, x, y, fftw_redft00, &
+            ior(fftw_estimate, fftw_unaligned))
+      else
+         allocate (x(np), y(np))
+         plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+         plans%bwd = fftw_plan_r2r_1d(np, y, x, fftw_hc2r, ior(fftw_estimate, fftw_unaligned))
+      end if
       plans%np = np
    end subroutine plans_create
 
@@ -62,6 +95,8 @@ contains
       plans%fwd = c_null_ptr
       plans%bwd = c_null_ptr
       plans%np = 0
+      plans%even = .false.
+      if (allocated(plans%sn)) deallocate (plans%sn, plans%cs)
    end subroutine plans_destroy
 
    !> Eigenvalues over np of the symmetric circulant with first column col (real), in
@@ -84,27 +119,74 @@ contains
       end do
    end subroutine circulant_symbol
 
-   !> y = C x for the circulant C of the given symbol (circulant_symbol), whole period.
+   !> y = C x for the circulant C of the given symbol (circulant_symbol) of period np =
+   !> size(symbol): x on the whole period, or an even field on its half (size np/2 + 1).
    subroutine circulant_apply(plans, symbol, x, y)
       type(fft_plans_type), intent(in) :: plans
       real(wp), intent(in) :: symbol(0:), x(0:)
       real(wp), intent(out) :: y(0:)
-      real(c_double) :: xw(size(x)), c(size(x))
       type(fft_plans_type) :: own
-      xw = x
-      if (c_associated(plans%fwd)) then
-         call fftw_execute_r2r(plans%fwd, xw, c)
-         c = c*symbol
-         call fftw_execute_r2r(plans%bwd, c, xw)
+      logical :: even
+      even = size(x) < size(symbol)
+      if (c_associated(plans%fwd) .and. plans%np == size(symbol) .and. (plans%even .eqv. even)) then
+         call transform(plans, symbol, x, y)
       else                                   ! no plans at hand: make and drop them
-         call plans_create(own, size(x))
-         call fftw_execute_r2r(own%fwd, xw, c)
-         c = c*symbol
-         call fftw_execute_r2r(own%bwd, c, xw)
+         call plans_create(own, size(symbol), even)
+         call transform(own, symbol, x, y)
          call plans_destroy(own)
       end if
-      y = xw
    end subroutine circulant_apply
+
+   !> circulant_apply with plans that fit: x to Fourier space, times the symbol, back.
+   !> For an even field the cosine transform gives the DFT's modes 0..np/2, and applied
+   !> again the inverse DFT times np (the symbol holds the eigenvalues over np).
+   subroutine transform(plans, symbol, x, y)
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: symbol(0:), x(0:)
+      real(wp), intent(out) :: y(0:)
+      real(c_double) :: xw(size(x)), c(size(x))
+      if (allocated(plans%sn)) then
+         call dct1(plans, x, c)
+         c = c*symbol(0:size(x) - 1)
+         call dct1(plans, c, y)
+         return
+      end if
+      xw = x
+      call fftw_execute_r2r(plans%fwd, xw, c)
+      c = c*symbol(0:size(x) - 1)
+      if (plans%even) then
+         call fftw_execute_r2r(plans%fwd, c, xw)
+      else
+         call fftw_execute_r2r(plans%bwd, c, xw)
+      end if
+      y = xw
+   end subroutine transform
+
+   !> The type-I cosine transform (FFTW's REDFT00) of x(0:m), m = np/2 even,
+   !>   y(k) = x(0) + (-1)^k x(m) + 2 sum_{j=1}^{m-1} x(j) cos(pi j k/m),
+   !> by one halfcomplex transform of length m of u(j) = (x(j) + x(m-j))/2 - sin(pi j/m)
+   !> (x(j) - x(m-j)): its cosine sums are y(2k)/2 and its sine sums the differences
+   !> (y(2k+1) - y(2k-1))/2 (the classical reduction, Numerical Recipes' cosft1).
+   subroutine dct1(plans, x, y)
+      type(fft_plans_type), intent(in) :: plans
+      real(wp), intent(in) :: x(0:)
+      real(wp), intent(out) :: y(0:)
+      real(c_double) :: u(0:size(x) - 2), h(0:size(x) - 2)
+      integer :: m, j, k
+      m = size(x) - 1
+      u(0) = 0.5_wp*(x(0) + x(m))
+      do j = 1, m - 1
+         u(j) = 0.5_wp*(x(j) + x(m - j)) - plans%sn(j)*(x(j) - x(m - j))
+      end do
+      call fftw_execute_r2r(plans%fwd, u, h)
+      y(1) = x(0) - x(m) + 2.0_wp*dot_product(x(1:m - 1), plans%cs(1:m - 1))
+      y(0) = 2.0_wp*h(0)
+      do k = 1, m/2 - 1
+         y(2*k) = 2.0_wp*h(k)
+         y(2*k + 1) = y(2*k - 1) - 2.0_wp*h(m - k)
+      end do
+      y(m) = 2.0_wp*h(m/2)
+   end subroutine dct1
 
    !> First column of the coarse circulant P^T K P (coarse period nc = np/ratio) from the
    !> fine circulant's column kcol.
@@ -144,8 +226,12 @@ contains
       np = size(d)
       nc = np/ratio
       tg%np = np; tg%nc = nc; tg%ratio = ratio; tg%even = even
-      tg%d = d
-      tg%dinv = 1.0_wp/(0.25_wp*np + max(d, 0.0_wp))
+      if (even) then                   ! the smoother acts on the half period
+         tg%d = d(0:np/2)
+      else
+         tg%d = d
+      end if
+      tg%dinv = 1.0_wp/(0.25_wp*np + max(tg%d, 0.0_wp))
       allocate (a(0:nc - 1, 0:nc - 1), t0(0:nc - 1), t1(0:nc - 1))
       do j = 0, nc - 1                 ! P^T diag(d) P: diagonal and the super-diagonal
          t0(j) = d(ratio*j)
@@ -184,14 +270,14 @@ contains
       call ldl_factor(tg%coarse)
    end subroutine twogrid_setup
 
-   !> x ~ A^-1 r on the whole period: Chebyshev smoothing, coarse correction, smoothing.
+   !> x ~ A^-1 r (on the whole period, or the half where tg%even): Chebyshev smoothing,
+   !> coarse correction, smoothing.
    subroutine twogrid_apply(tg, plans, symbol, r, x)
       type(twogrid_type), intent(in) :: tg
       type(fft_plans_type), intent(in) :: plans
       real(wp), intent(in) :: symbol(0:), r(0:)
       real(wp), intent(out) :: x(0:)
-      real(wp), allocatable :: res(:), dx(:)
-      allocate (res(0:tg%np - 1), dx(0:tg%np - 1))
+      real(wp) :: res(0:size(r) - 1), dx(0:size(r) - 1)
       call chebyshev(tg, plans, symbol, r, x)
       call apply_a(tg, plans, symbol, x, res)
       res = r - res
@@ -203,7 +289,7 @@ contains
       x = x + dx
    end subroutine twogrid_apply
 
-   !> y = (K + diag d) x on the whole period.
+   !> y = (K + diag d) x (whole period, or half where tg%even).
    subroutine apply_a(tg, plans, symbol, x, y)
       type(twogrid_type), intent(in) :: tg
       type(fft_plans_type), intent(in) :: plans
@@ -219,10 +305,9 @@ contains
       type(fft_plans_type), intent(in) :: plans
       real(wp), intent(in) :: symbol(0:), r(0:)
       real(wp), intent(out) :: x(0:)
-      real(wp), allocatable :: res(:), p(:), ap(:)
+      real(wp) :: res(0:size(r) - 1), p(0:size(r) - 1), ap(0:size(r) - 1)
       real(wp) :: theta, delta, sigma, rho, rho_new, bottom
       integer :: k
-      allocate (res(0:tg%np - 1), p(0:tg%np - 1), ap(0:tg%np - 1))
       bottom = cheb_bottom_ratio/tg%ratio
       theta = 0.5_wp*(cheb_top + bottom)
       delta = 0.5_wp*(cheb_top - bottom)
@@ -242,42 +327,47 @@ contains
       end do
    end subroutine chebyshev
 
-   !> dx = P A_c^-1 P^T res (A_c = P^T A P, on the even half where even).
+   !> dx = P A_c^-1 P^T res (A_c = P^T A P; res and dx on the half period and A_c on the
+   !> even half where tg%even).
    pure subroutine coarse_correct(tg, res, dx)
       type(twogrid_type), intent(in) :: tg
       real(wp), intent(in) :: res(0:)
       real(wp), intent(out) :: dx(0:)
-      real(wp), allocatable :: rc(:), xc(:), b(:)
+      real(wp) :: rc(0:tg%nc - 1), xc(0:tg%nc), wt(tg%ratio - 1)
       integer :: j, f, r, np, nc, m
-      real(wp) :: u
       r = tg%ratio; np = tg%np; nc = tg%nc
-      allocate (rc(0:nc - 1), xc(0:nc - 1))
-      do j = 0, nc - 1
+      wt = [(1.0_wp - real(f, wp)/r, f = 1, r - 1)]
+      m = nc
+      if (tg%even) m = nc/2 + 1
+      do j = 0, m - 1                   ! restriction P^T, on the coarse nodes held
          rc(j) = res(r*j)
          do f = 1, r - 1
-            u = real(f, wp)/r
-            rc(j) = rc(j) + (1.0_wp - u)*res(modulo(r*j + f, np)) + (1.0_wp - u)*res(modulo(r*j - f, np))
+            rc(j) = rc(j) + wt(f)*(res(node(r*j + f)) + res(node(r*j - f)))
          end do
       end do
-      if (tg%even) then
-         m = nc/2 + 1
-         b = rc(0:m - 1)
-         b(2:m - 1) = 2.0_wp*b(2:m - 1)
-         call ldl_solve(tg%coarse, b)
-         xc(0:m - 1) = b
-         do j = 1, m - 2
-            xc(nc - j) = b(j + 1)
-         end do
+      if (tg%even) then                 ! the even half, interior nodes counted twice
+         rc(1:m - 2) = 2.0_wp*rc(1:m - 2)
+         call ldl_solve(tg%coarse, rc(0:m - 1))
+         xc(0:m - 1) = rc(0:m - 1)
+         xc(m) = xc(m - 2)              ! the node past N/2, by symmetry
       else
-         xc = rc
-         call ldl_solve(tg%coarse, xc)
+         xc(0:nc - 1) = rc
+         call ldl_solve(tg%coarse, xc(0:nc - 1))
+         xc(nc) = xc(0)                 ! periodic
       end if
-      do j = 0, nc - 1
-         do f = 0, r - 1
-            u = real(f, wp)/r
-            dx(r*j + f) = (1.0_wp - u)*xc(j) + u*xc(modulo(j + 1, nc))
+      do j = 0, (size(dx) - 1)/r        ! prolongation P: linear between coarse nodes
+         dx(r*j) = xc(j)
+         do f = 1, min(r - 1, size(dx) - 1 - r*j)
+            dx(r*j + f) = wt(f)*xc(j) + (1.0_wp - wt(f))*xc(j + 1)
          end do
       end do
+   contains
+      !> The fine node holding the value at i (periodic; reflected where even)
+      pure integer function node(i)
+         integer, intent(in) :: i
+         node = modulo(i, np)
+         if (tg%even .and. node > np/2) node = np - node
+      end function node
    end subroutine coarse_correct
 
 end module wa_bem_fast

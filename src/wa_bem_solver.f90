@@ -52,6 +52,8 @@ module wa_bem_solver
       type(twogrid_type) :: tg
       type(fft_plans_type) :: plans
       real(wp), allocatable :: dw(:), q(:)
+      !> GMRES's Krylov basis, kept from call to call (krylov_solve)
+      real(wp), allocatable :: basis(:, :)
       !> negative eigenvalues of the Hessians under load control (S) and gap control
       !> (S on mean-gap-preserving variations)
       integer :: neg_load = 0, neg_gap = 0
@@ -68,6 +70,8 @@ module wa_bem_solver
    real(wp), parameter :: h_floor_fraction = 0.1_wp
    !> GMRES iterations above which the preconditioner is refactorised
    integer, parameter :: krylov_refresh = 12
+   !> GMRES iterations at most (no restart)
+   integer, parameter :: krylov_dim = 40
 
    !> Cap of the unknowns per state (N/2 + 1 on an even profile, N otherwise): beyond
    !> dense_max_unknowns a state costs O(N) memory, and a branch of a few hundred states
@@ -83,8 +87,10 @@ module wa_bem_solver
    !> needs many more GMRES iterations: N = 4096 over 128 takes twice as long)
    integer, parameter :: coarse_min = 128, max_ratio = 8
 
-   !> Time cap of the automatic grid: one cycle at N = 2048 takes about two minutes on
-   !> one core (doc/accuracy-performance.md); a finer automatic grid is refused.
+   !> Time cap of the automatic grid: one cycle at N = 2048 takes 1.5 s at alpha 0.3, mu 3
+   !> but about 40 s at alpha 34.8, mu 21.9 (14 000 trace points: P* spans hundreds of
+   !> units in steps of at most dp_max) on one core (doc/accuracy-performance.md); a finer
+   !> automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
    !> Grid points the automatic N puts on the interaction zone
    real(wp), parameter :: points_per_zone = 12.0_wp
@@ -194,9 +200,10 @@ contains
             return
          end if
       end if
-      call new_grid(np, problem%grid, status, errmsg, profile)
+      if (np <= 2*(lj_max_unknowns - 1)) call new_grid(np, problem%grid, status, errmsg, profile)
       if (status /= wa_ok) return
-      if (problem%grid%n > lj_max_unknowns) then
+      ! (a larger n is refused before new_grid allocates its N points: n = 2^30 aborted)
+      if (np > 2*(lj_max_unknowns - 1) .or. problem%grid%n > lj_max_unknowns) then
          call set_error(wa_capacity_too_small, "lj: n gives more than 8193 unknowns (n <= "// &
             "16384 on an even profile, n <= 8192 otherwise)", status, errmsg)
          return
@@ -250,15 +257,15 @@ contains
       call plans_destroy(jac%plans)
    end subroutine jacobian_free
 
-   !> y = W K x on the unknowns, by FFT over the whole period.
+   !> y = W K x on the unknowns, by FFT (by the cosine transform of the half period on
+   !> an even grid).
    subroutine stiffness_apply(problem, jac, x, y)
       type(lj_problem_type), intent(in) :: problem
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: y(:)
-      real(wp) :: g(0:problem%grid%n_period - 1)
-      call circulant_apply(jac%plans, problem%symbol, full_period(problem%grid, x), g)
-      y = problem%grid%w*g(0:problem%grid%n - 1)
+      call circulant_apply(jac%plans, problem%symbol, x, y)
+      y = problem%grid%w*y
    end subroutine stiffness_apply
 
    !> r = W (K (h - f) + sigma(h) + P) at z = (h, P); dw = W sigma'(h) where present.
@@ -268,10 +275,9 @@ contains
       real(wp), intent(in) :: z(:)
       real(wp), intent(out) :: r(:)
       real(wp), intent(out), optional :: dw(:)
-      real(wp), allocatable :: sig(:), slope(:)
+      real(wp) :: sig(problem%grid%n), slope(problem%grid%n)
       integer :: n
       n = problem%grid%n
-      allocate (sig(n), slope(n))
       call law_eval(problem%law, z(1:n), sig, slope)
       call stiffness_apply(problem, jac, z(1:n) - problem%grid%f, r)
       r = r + problem%grid%w*(sig + z(n + 1))
@@ -284,12 +290,9 @@ contains
       type(jacobian_type), intent(in) :: jac
       real(wp), intent(in) :: b(:)
       real(wp), intent(out) :: x(:)
-      real(wp) :: g(0:problem%grid%n_period - 1)
       if (problem%two_grid) then
-         ! S = W A: A^-1 (b/w), on the whole period (an even field unfolded)
-         call twogrid_apply(jac%tg, jac%plans, problem%symbol, &
-            full_period(problem%grid, b/problem%grid%w), g)
-         x = g(0:problem%grid%n - 1)
+         ! S = W A: A^-1 (b/w), on the unknowns (an even field's half period)
+         call twogrid_apply(jac%tg, jac%plans, problem%symbol, b/problem%grid%w, x)
       else
          x = b
          call ldl_solve(jac%fact, x)
@@ -308,7 +311,8 @@ contains
       n = problem%grid%n
       allocate (sig(n))
       if (.not. allocated(jac%dw)) allocate (jac%dw(n), jac%q(n))
-      if (jac%plans%np /= problem%grid%n_period) call plans_create(jac%plans, problem%grid%n_period)
+      if (jac%plans%np /= problem%grid%n_period .or. (jac%plans%even .neqv. problem%grid%even)) &
+         call plans_create(jac%plans, problem%grid%n_period, problem%grid%even)
       call law_eval(problem%law, z(1:n), sig, jac%dw)
       if (problem%two_grid) then
          call twogrid_setup(full_period(problem%grid, jac%dw), problem%kc, problem%ratio, &
@@ -341,7 +345,7 @@ contains
    !> S_frozen x + w y = r1, a(1:n) . x + a(n+1) y = r2 (S as factorised in jac).
    subroutine bordered_solve(problem, jac, a, r1, r2, x, y)
       type(lj_problem_type), intent(in) :: problem
-      type(jacobian_type), intent(in) :: jac
+      type(jacobian_type), intent(inout) :: jac
       real(wp), intent(in) :: a(:), r1(:), r2
       real(wp), intent(out) :: x(:), y
       real(wp), allocatable :: e1(:), dx(:)
@@ -469,10 +473,11 @@ contains
 
    !> GMRES on [[S(z), w], [a]] [x, y] = [r1, r2] with S(z) = W K + diag(dw), right-
    !> preconditioned by the block elimination on the factorisation in jac. ok false when
-   !> the relative residual (tolerance, default 1e-11) is not reached in m iterations.
+   !> the relative residual (tolerance, default 1e-11) is not reached in krylov_dim
+   !> iterations. The Krylov basis is jac's workspace (no allocation per solve).
    subroutine krylov_solve(problem, jac, dw, a, r1, r2, x, y, ok, iterations, tolerance)
       type(lj_problem_type), intent(in) :: problem
-      type(jacobian_type), intent(in) :: jac
+      type(jacobian_type), intent(inout) :: jac
       real(wp), intent(in) :: dw(:), a(:), r1(:), r2
       real(wp), intent(out) :: x(:), y
       logical, intent(out) :: ok
@@ -480,19 +485,38 @@ contains
       integer, intent(out), optional :: iterations
       !> relative residual asked for (default 1e-11)
       real(wp), intent(in), optional :: tolerance
-      integer, parameter :: m = 40
+      real(wp), allocatable :: v(:, :)
+      integer :: its
       real(wp) :: rtol
-      real(wp), allocatable :: v(:, :), h(:, :), g(:), cs(:), sn(:), u(:), pu(:), yk(:)
+      rtol = 1.0e-11_wp
+      if (present(tolerance)) rtol = tolerance
+      call move_alloc(jac%basis, v)        ! out of jac while jac is read below
+      if (allocated(v)) then
+         if (size(v, 1) /= size(r1) + 1) deallocate (v)
+      end if
+      if (.not. allocated(v)) allocate (v(size(r1) + 1, krylov_dim + 1))
+      call gmres(problem, jac, dw, a, r1, r2, x, y, ok, its, rtol, v)
+      call move_alloc(v, jac%basis)
+      if (present(iterations)) iterations = its
+   end subroutine krylov_solve
+
+   !> krylov_solve's iteration, on the basis v (n + 1 by krylov_dim + 1).
+   subroutine gmres(problem, jac, dw, a, r1, r2, x, y, ok, iterations, rtol, v)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(in) :: jac
+      real(wp), intent(in) :: dw(:), a(:), r1(:), r2, rtol
+      real(wp), intent(out) :: x(:), y, v(:, :)
+      logical, intent(out) :: ok
+      integer, intent(out) :: iterations
+      integer, parameter :: m = krylov_dim
+      real(wp) :: h(m + 1, m), g(m + 1), cs(m), sn(m), u(size(r1) + 1), pu(size(r1) + 1)
       real(wp) :: beta, tmp
       integer :: n, j, i, k
       n = problem%grid%n
-      allocate (v(n + 1, m + 1), h(m + 1, m), g(m + 1), cs(m), sn(m), u(n + 1), pu(n + 1))
-      rtol = 1.0e-11_wp
-      if (present(tolerance)) rtol = tolerance
       x = 0.0_wp
       y = 0.0_wp
       ok = .true.
-      if (present(iterations)) iterations = 0
+      iterations = 0
       v(1:n, 1) = r1
       v(n + 1, 1) = r2
       beta = norm2(v(:, 1))
@@ -523,22 +547,21 @@ contains
          g(j + 1) = -sn(j)*g(j)
          g(j) = cs(j)*g(j)
          k = j
-         if (present(iterations)) iterations = j
+         iterations = j
          if (abs(g(j + 1)) <= rtol*beta .or. h(j, j) == 0.0_wp) then
             ok = abs(g(j + 1)) <= rtol*beta
             exit
          end if
       end do
       if (.not. ok) return
-      allocate (yk(k))
       do i = k, 1, -1                                  ! back substitution
-         yk(i) = (g(i) - dot_product(h(i, i + 1:k), yk(i + 1:k)))/h(i, i)
+         g(i) = (g(i) - dot_product(h(i, i + 1:k), g(i + 1:k)))/h(i, i)
       end do
-      u = matmul(v(:, 1:k), yk)
+      u = matmul(v(:, 1:k), g(1:k))
       call precondition(problem, jac, a, u, pu)
       x = pu(1:n)
       y = pu(n + 1)
-   end subroutine krylov_solve
+   end subroutine gmres
 
    !> The bordered Jacobian at the current point times u.
    subroutine apply_jacobian(problem, jac, dw, a, u, ju)

@@ -1,9 +1,9 @@
 !> display: none
 !>
 !> The C interface, smooth adhesion (the self-consistent Lennard-Jones model): the cycle
-!> with its critical values and error estimates, and the traced equilibrium curve
-!> (declarations in include/wavyadhesion.h; the conventions in wa_capi). Each export is
-!> one call of its `*_core` routine.
+!> with its critical values and error estimates, the traced equilibrium curve and the
+!> gap and traction of the state at a given a* (declarations in include/wavyadhesion.h;
+!> the conventions in wa_capi). Each export is one call of its `*_core` routine.
 module wa_capi_lj
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -13,13 +13,14 @@ module wa_capi_lj
    use wa_bem_solver, only: lj_problem_type, lj_problem
    use wa_bem_trace, only: lj_branch_type, lj_trace
    use wa_bem_path, only: lj_cycle_type, lj_cycle
+   use wa_bem_state, only: lj_state_type, lj_state_at_a
    use wa_capi_util, only: msg_len, copy_message, check_outputs, too_small, &
       internal_capacity, put_nan, put_int, put_nans, store_reals, store_ints, store_scalar
    implicit none
    private
 
-   public :: capi_lj_cycle, capi_lj_trace
-   public :: lj_cycle_core, lj_trace_core
+   public :: capi_lj_cycle, capi_lj_trace, capi_lj_profile
+   public :: lj_cycle_core, lj_trace_core, lj_profile_core
 
 contains
 
@@ -85,6 +86,41 @@ contains
          [p_star, gbar, a_star, b_star], [stable_load, stable_gap, event], n_points, n_used, &
          message, message_capacity)
    end function capi_lj_trace
+
+   !> int wa_lj_profile(alpha, mu, n, n_profile, profile, a_star, capacity, x_star[],
+   !> traction[], gap[], state[4], *n_points, message, message_capacity): the gap and
+   !> traction at the N grid nodes (x* from -1/2) of the traced state with a* nearest a_star,
+   !> among the load-stable states when there are any (lj_state_at_a). When N exceeds
+   !> capacity the first capacity points are written and the status is
+   !> WA_CAPACITY_TOO_SMALL. On any other failure *n_points = 0 and state is NaN.
+   function capi_lj_profile(alpha, mu, n, n_profile, profile, a_star, capacity, x_star, &
+         traction, gap, state, n_points, message, message_capacity) result(status) &
+         bind(C, name="wa_lj_profile")
+      !> Johnson's parameter and the transition parameter (the supported domain, mu > 0)
+      real(c_double), value, intent(in) :: alpha, mu
+      !> Grid points per period: 0 (automatic) or even, >= 8
+      integer(c_int), value, intent(in) :: n
+      !> Number of profile samples, >= 4 when profile is not NULL (else ignored)
+      integer(c_int), value, intent(in) :: n_profile
+      !> const double[n_profile] or NULL (the sinusoid): heights over Delta at x* = j/n_profile
+      type(c_ptr), value, intent(in) :: profile
+      !> The contact half-width wanted, in [0, 1/2]
+      real(c_double), value, intent(in) :: a_star
+      !> Length of the arrays, >= 0 (the arrays may be NULL when it is 0)
+      integer(c_int), value, intent(in) :: capacity
+      !> double[capacity]: x*, traction p/p* (compressive positive), gap h/Delta
+      type(c_ptr), value, intent(in) :: x_star, traction, gap
+      !> double[4] or NULL: a*, b*, P*, gbar* of the state drawn
+      type(c_ptr), value, intent(in) :: state
+      !> int *: receives N, the number of points
+      type(c_ptr), value, intent(in) :: n_points
+      !> char * or NULL: receives the message; its size in bytes, NUL included
+      type(c_ptr), value, intent(in) :: message
+      integer(c_int), value, intent(in) :: message_capacity
+      integer(c_int) :: status
+      status = lj_profile_core(alpha, mu, n, n_profile, profile, a_star, capacity, &
+         [x_star, traction, gap], state, n_points, message, message_capacity)
+   end function capi_lj_profile
 
    ! ---------------------------------------------------------------- cores
 
@@ -182,7 +218,46 @@ contains
       call copy_message(status, msg, message, message_capacity)
    end function lj_trace_core
 
-   !> The checks both exports share: the profile's count, alpha and mu, then the problem
+   !> Validate, draw the state (lj_state_at_a), write min(N, capacity) points, the state
+   !> and N. reals = [x_star, traction, gap].
+   function lj_profile_core(alpha, mu, n, n_profile, profile, a_star, capacity, reals, &
+         state, n_points, message, message_capacity) result(status)
+      real(c_double), intent(in) :: alpha, mu, a_star
+      integer(c_int), intent(in) :: n, n_profile, capacity, message_capacity
+      type(c_ptr), intent(in) :: profile, reals(3), state, n_points, message
+      integer(c_int) :: status
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_state_type) :: drawn
+      real(wp), allocatable :: prof(:)
+      integer :: stat, m
+      character(len=msg_len) :: msg
+
+      msg = ""
+      call put_int(n_points, 0)
+      call put_nans(state, 4_c_int)
+      call check_outputs("n_points", n_points, "capacity", capacity, reals, &
+         "x_star, traction and gap", stat, msg)
+      if (stat == wa_ok) call lj_inputs(alpha, mu, n, n_profile, profile, params, prof, &
+         problem, stat, msg)
+      if (stat == wa_ok) call lj_state_at_a(problem, real(a_star, wp), drawn, stat, msg)
+      call internal_capacity(stat, msg)
+      if (stat == wa_ok) then
+         m = min(drawn%n_period, int(capacity))
+         call store_reals(reals(1), drawn%x(1:m))
+         call store_reals(reals(2), drawn%traction(1:m))
+         call store_reals(reals(3), drawn%gap(1:m))
+         if (c_associated(state)) call store_reals(state, [drawn%a_star, drawn%b_star, &
+            drawn%p_star, drawn%gbar])
+         call put_int(n_points, drawn%n_period)
+         if (drawn%n_period > capacity) call too_small("the profile has", "points", &
+            drawn%n_period, capacity, stat, msg)
+      end if
+      status = int(stat, c_int)
+      call copy_message(status, msg, message, message_capacity)
+   end function lj_profile_core
+
+   !> The checks the exports share: the profile's count, alpha and mu, then the problem
    !> itself (lj_problem: n, the profile's values, mu > 0, the grid's caps; a cap
    !> exceeded is the caller's n or parameters, so WA_INVALID_ARGUMENT). prof receives a
    !> copy of the samples (left unallocated, i.e. absent, for the sinusoid).

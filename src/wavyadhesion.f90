@@ -158,6 +158,8 @@
 !>   [[wa_bem_path:lj_path_full_contact_reached]], [[wa_bem_path:lj_path_full_contact_left]],
 !>   [[wa_bem_path:lj_path_pull_off]]: the stages and events of a path.
 !> - [[lj_profile]]: the gap and traction of one state over the period.
+!> - [[lj_state_type]], [[lj_state_at_a]]: the state at a given a* (the traced one with a*
+!>   nearest it) with its gap and traction from x* = -1/2 (every face's LJ profile).
 !> - [[lj_nearest_state]]: the traced state with a* nearest a target (among the load-stable
 !>   states when there are any), the state a profile draws.
 !> - [[lj_rigid_pull_off]]: the rigid-limit pull-off in closed form.
@@ -220,6 +222,7 @@ module wavyadhesion
    use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, lj_nearest_state, &
       lj_event_none, &
       lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
+   use wa_bem_state, only: lj_state_type, lj_state_at_a
    implicit none
    private
 
@@ -273,5 +276,6 @@ module wavyadhesion
    public :: lj_problem_type, lj_branch_type, lj_trace_options, lj_trace, lj_nearest_state, &
       lj_event_none, &
       lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
+   public :: lj_state_type, lj_state_at_a
 
 end module wavyadhesion

@@ -1,7 +1,9 @@
 !> Benchmark of the smooth-adhesion (Lennard-Jones) cycle. Prints figures; asserts nothing.
 !>   cd study && fpm run --profile release wavyadhesion-lj-benchmark [-- --max-n N] [--cap T]
-!> N = 256 .. max-n (default 8192); a size whose predicted cost (from the last one and
-!> the growth so far) exceeds the cap T seconds (default 60) is skipped with the reason.
+!>      [--case ALPHA MU]
+!> N = 256 .. max-n (default 8192, at most 16384); a size whose predicted cost (from the
+!> last one and the growth so far) exceeds the cap T seconds (default 60) is skipped with
+!> the reason. --case times one cycle at (ALPHA, MU) on the automatic grid instead.
 !> One cycle = trace from far apart to full contact, both paths, P_fc*, P_pf*, W*.
 program bench_lj
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -13,22 +15,32 @@ program bench_lj
    character(len=256) :: msg
    type(params_type) :: params
    type(lj_cycle_type) :: cyc
-   real(wp) :: t, ln(8), lt(8), slope, values(4, 8), cap, predicted
-   integer :: sizes(8)
+   real(wp) :: t, ln(8), lt(8), slope, values(4, 8), cap, predicted, alpha, mu
+   integer :: sizes(8), points, factors
 
    max_n = 8192
    cap = 60.0_wp
+   alpha = -1.0_wp
+   mu = -1.0_wp
    i_arg = 1
    do while (i_arg <= command_argument_count())
       call get_command_argument(i_arg, arg)
       select case (arg)
       case ("--help", "-h")
-         write (*, '(a)') "usage: wavyadhesion-lj-benchmark [--max-n N] [--cap SECONDS]", &
+         write (*, '(a)') "usage: wavyadhesion-lj-benchmark [--max-n N] [--cap SECONDS] "// &
+            "[--case ALPHA MU]", &
             "Times the smooth-adhesion cycle at alpha 0.3, mu 3 (automatic grid, with its", &
             "error estimate), the cost of one cycle for N = 256 .. max-n (default 8192,", &
-            "at most 8192; a size predicted above the cap, default 60 s, is skipped) with", &
-            "the fitted growth exponent, and the convergence table."
+            "at most 16384; a size predicted above the cap, default 60 s, is skipped) with", &
+            "the fitted growth exponent, and the convergence table. --case: one cycle at", &
+            "(ALPHA, MU) on the automatic grid only."
          stop
+      case ("--case")
+         call get_command_argument(i_arg + 1, arg)
+         read (arg, *) alpha
+         call get_command_argument(i_arg + 2, arg)
+         read (arg, *) mu
+         i_arg = i_arg + 2
       case ("--max-n")
          i_arg = i_arg + 1
          call get_command_argument(i_arg, arg)
@@ -46,6 +58,18 @@ program bench_lj
    end do
 
    msg = ""
+   if (alpha >= 0.0_wp) then
+      call new_params(alpha, mu, params, status, msg)
+      call report_status("parameters")
+      t = seconds()
+      call one_cycle(lj_auto_n(params), points, factors)
+      t = seconds() - t
+      call report_status("automatic grid")
+      write (*, '(a,2g12.5,a,i0,a,f9.3,a,i0,a,i0,a)') "cycle at alpha, mu =", alpha, mu, &
+         " on the automatic N = ", cyc%n_period, ": ", t, " s (CPU; ", points, &
+         " points, ", factors, " factorisations)"
+      stop
+   end if
    call new_params(0.3_wp, 3.0_wp, params, status)
    write (*, '(a)') "wavyadhesion "//wa_version//" smooth-adhesion benchmark (one core)"
    write (*, '(a)') "target (issue): full cycle at alpha 0.3, mu 3, automatic N <= 0.5 s; N = 4096 <= 5 s"
@@ -63,10 +87,11 @@ program bench_lj
    write (*, '(a,es12.4,a,es9.2)') "  snap  = ", cyc%p_snap, "  +- ", cyc%p_snap_err
    write (*, '(a,es12.4,a,es9.2)') "  W*    = ", cyc%w_star, "  +- ", cyc%w_star_err
 
-   write (*, '(/,a)') "    N   CPU [s]             P_pf*                P_fc*                snap                 W*"
+   write (*, '(/,a)') "    N   CPU [s]  points factors             P_pf*                P_fc*"// &
+      "                snap                 W*"
    m = 0
    n = 256
-   do while (n <= min(max_n, 8192))
+   do while (n <= min(max_n, 16384))
       if (m >= 1) then
          slope = 1.5_wp                   ! the growth so far, at least N^1.5
          if (m >= 2) slope = max(slope, slope_of(m))
@@ -79,7 +104,7 @@ program bench_lj
          end if
       end if
       t = seconds()
-      call lj_cycle(params, cyc, status, msg, n=n, estimate=.false.)
+      call one_cycle(n, points, factors)
       t = seconds() - t
       call report_status("fixed grid")
       m = m + 1
@@ -87,7 +112,7 @@ program bench_lj
       ln(m) = log(real(n, wp))
       lt(m) = log(t)
       values(:, m) = [cyc%p_pf, cyc%p_fc, cyc%p_snap, cyc%w_star]
-      write (*, '(i6,f11.3,4es21.12)') n, t, values(:, m)
+      write (*, '(i6,f10.3,i8,i8,4es21.12)') n, t, points, factors, values(:, m)
       n = 2*n
    end do
    if (m >= 2) then
@@ -101,6 +126,25 @@ program bench_lj
    end if
 
 contains
+
+   !> One cycle at n points per period (what lj_cycle does without its estimate), with
+   !> the traced points and the factorisations of its trace.
+   subroutine one_cycle(n, points, factors)
+      integer, intent(in) :: n
+      integer, intent(out) :: points, factors
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: branch
+      points = 0
+      factors = 0
+      cyc = lj_cycle_type()
+      call lj_problem(params, problem, status, msg, n)
+      if (status /= wa_ok) return
+      call lj_trace(problem, branch, status, msg)
+      if (status /= wa_ok) return
+      points = branch%n
+      factors = branch%n_factor
+      call lj_paths(problem, branch, cyc, status, msg)
+   end subroutine one_cycle
 
    !> Least-squares slope of log(cost) against log(N) over the first k sizes.
    real(wp) function slope_of(k)

@@ -1048,6 +1048,7 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
    type(lj_problem_type) :: problem
    type(lj_branch_type) :: b, walked
    type(lj_cycle_type) :: cycle, coarse
+   real(c_double), allocatable :: prof(:)
    character(len=256) :: side
    integer :: k, stat, st2
 
@@ -1055,12 +1056,9 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
    p_star = 0; gbar = 0; a_star = 0; b_star = 0; h_min = 0; h_max = 0
    stable_load = 0; stable_gap = 0; event = 0; extremum = 0; n_points = 0; n_period = 0
    values = ieee_value(1.0_c_double, ieee_quiet_nan)
+   if (use_profile /= 0) prof = profile     ! else unallocated: absent, the sinusoid
    call new_params(alpha, mu, params, stat, message)
-   if (stat == wa_ok .and. use_profile /= 0) then
-      call lj_problem(params, problem, stat, message, int(n), profile)
-   else if (stat == wa_ok) then
-      call lj_problem(params, problem, stat, message, int(n))
-   end if
+   if (stat == wa_ok) call lj_problem(params, problem, stat, message, int(n), prof)
    if (stat == wa_ok) call lj_trace(problem, b, stat, message)
    if (stat == wa_ok) then
       k = min(b%n, int(capacity))
@@ -1082,11 +1080,7 @@ subroutine fa_lj_trace(capacity, alpha, mu, n, use_profile, m, profile, p_star, 
       side = ""
       call lj_paths(problem, walked, cycle, st2, side)
       if (st2 == wa_ok) values([1, 3, 5]) = [cycle%p_fc, cycle%p_pf, cycle%w_star]
-      if (st2 == wa_ok .and. use_profile /= 0) then
-         call lj_cycle(params, coarse, st2, side, b%n_period/2, profile, .false.)
-      else if (st2 == wa_ok) then
-         call lj_cycle(params, coarse, st2, side, b%n_period/2, estimate=.false.)
-      end if
+      if (st2 == wa_ok) call lj_cycle(params, coarse, st2, side, b%n_period/2, prof, .false.)
       if (st2 == wa_ok) values([2, 4, 6]) = abs([cycle%p_fc - coarse%p_fc, &
          cycle%p_pf - coarse%p_pf, cycle%w_star - coarse%w_star])
    end if
@@ -1146,18 +1140,17 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    !f2py threadsafe
    type(params_type) :: params
    type(lj_cycle_type) :: c
+   real(c_double), allocatable :: prof(:)
    integer :: stat, k
 
    message = ""
    l_stage = 0; l_event = 0; l_a = 0; l_p = 0; l_g = 0; n_load = 0
    g_stage = 0; g_event = 0; g_a = 0; g_p = 0; g_g = 0; n_gap = 0; n_period = 0
    values = ieee_value(1.0_c_double, ieee_quiet_nan)
+   if (use_profile /= 0) prof = profile     ! else unallocated: absent, the sinusoid
    call new_params(alpha, mu, params, stat, message)
-   if (stat == wa_ok .and. use_profile /= 0) then
-      call lj_cycle(params, c, stat, message, int(n), profile, estimate /= 0, int(n_max))
-   else if (stat == wa_ok) then
-      call lj_cycle(params, c, stat, message, int(n), estimate=estimate /= 0, n_max=int(n_max))
-   end if
+   if (stat == wa_ok) call lj_cycle(params, c, stat, message, int(n), prof, estimate /= 0, &
+      int(n_max))
    if (stat == wa_ok) then
       k = min(c%load%n, int(capacity))
       l_stage(1:k) = int(c%load%stage(1:k), c_int); l_event(1:k) = int(c%load%event(1:k), c_int)
@@ -1182,18 +1175,17 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    status = int(stat, c_int)
 end subroutine fa_lj_cycle
 
-!> Gap and traction over the period of one state of the smooth (Lennard-Jones) model: the
-!> traced state with a* nearest a_target (among the load-stable states when there are
-!> any; the CLI's `profile --model lj`), at the N grid nodes x* = j/N - 1/2, j = 0..N-1.
+!> Gap and traction over the period of one state of the smooth (Lennard-Jones) model:
+!> lj_state_at_a (the traced state with a* nearest a_target, among the load-stable states
+!> when there are any), at the N grid nodes x* = j/N - 1/2, j = 0..N-1.
 !> Status 4 (capacity too small) when N > capacity (n_period says how many are needed).
 subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_target, x, &
       traction, gap, n_period, state, status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
-   use wa_status, only: wa_ok, wa_capacity_too_small, wa_invalid_argument
+   use wa_status, only: wa_ok, wa_capacity_too_small
    use wa_params, only: params_type, new_params
    use wa_bem_solver, only: lj_problem_type, lj_problem
-   use wa_bem_trace, only: lj_branch_type, lj_trace, lj_nearest_state
-   use wa_bem_path, only: lj_profile
+   use wa_bem_state, only: lj_state_type, lj_state_at_a
    implicit none
    !> Length of the output arrays, >= 1
    integer(c_int), intent(in) :: capacity
@@ -1224,43 +1216,27 @@ subroutine fa_lj_profile(capacity, alpha, mu, n, use_profile, m, profile, a_targ
    !f2py threadsafe
    type(params_type) :: params
    type(lj_problem_type) :: problem
-   type(lj_branch_type) :: b
-   real(c_double), allocatable :: xs(:), hs(:), ss(:)
-   integer :: i, k, j, np, stat
+   type(lj_state_type) :: s
+   real(c_double), allocatable :: prof(:)
+   integer :: np, stat
 
    message = ""
    x = 0; traction = 0; gap = 0; n_period = 0; state = 0
-   stat = wa_ok
-   if (.not. (a_target >= 0.0_c_double .and. a_target <= 0.5_c_double)) then
-      stat = wa_invalid_argument
-      message = "a_star is outside its valid range [0, 1/2]"
-   end if
-   if (stat == wa_ok) call new_params(alpha, mu, params, stat, message)
-   if (stat == wa_ok .and. use_profile /= 0) then
-      call lj_problem(params, problem, stat, message, int(n), profile)
-   else if (stat == wa_ok) then
-      call lj_problem(params, problem, stat, message, int(n))
-   end if
-   if (stat == wa_ok) call lj_trace(problem, b, stat, message)
+   if (use_profile /= 0) prof = profile     ! else unallocated: absent, the sinusoid
+   call new_params(alpha, mu, params, stat, message)
+   if (stat == wa_ok) call lj_problem(params, problem, stat, message, int(n), prof)
+   if (stat == wa_ok) call lj_state_at_a(problem, a_target, s, stat, message)
    if (stat == wa_ok) then
-      call lj_nearest_state(b, a_target, k, stat, message)
-   end if
-   if (stat == wa_ok) then
-      np = b%n_period
+      np = s%n_period
       n_period = int(np, c_int)
-      state = [b%a_star(k), b%b_star(k), b%p_star(k), b%gbar(k)]
+      state = [s%a_star, s%b_star, s%p_star, s%gbar]
       if (np > capacity) then
          stat = wa_capacity_too_small
          message = "fa_lj_profile: capacity too small"
       else
-         allocate (xs(np), hs(np), ss(np))
-         call lj_profile(problem, b%z(:, k), xs, hs, ss)
-         do i = 1, np                      ! from x* = -1/2 (node N/2) on
-            j = modulo(i - 1 + np/2, np) + 1
-            x(i) = xs(j) - merge(1.0_c_double, 0.0_c_double, xs(j) >= 0.5_c_double)
-            traction(i) = -ss(j)
-            gap(i) = hs(j)
-         end do
+         x(1:np) = s%x
+         traction(1:np) = s%traction
+         gap(1:np) = s%gap
       end if
    end if
    status = int(stat, c_int)

@@ -75,6 +75,10 @@ def test_call_in_helper_thread_returns_or_raises_in_the_caller():
     # with control 'both', 200 alpha: 19 s)
     ("wa.gap_critical('md', 0.3, np.logspace(-2, 1, 100000))", 10.0),
     ("wa.adhesion_map('md', (0.01, 10.0, 400), control='both')", 10.0),
+    # LJ: one task per point, each in a helper thread (~1.3 s each at the automatic grid;
+    # one point at n = 2048: ~6 s)
+    ("wa.critical_forces('lj', 0.3, np.linspace(2.0, 3.0, 200))", 10.0),
+    ("wa.critical_forces('lj', 0.3, 2.5, n=2048)", 3.0),
 ])
 def test_long_call_stops_on_sigint(call, bound):
     child = subprocess.Popen([sys.executable, "-c", CHILD.format(call=call)],

@@ -4,6 +4,7 @@ profile=, and the errors. Small grids (n = 256) except where the automatic grid 
 point; each cycle at the automatic grid (N = 512 at alpha 0.3, mu 3) takes about a second.
 """
 import math
+import os
 
 import numpy as np
 import pytest
@@ -148,6 +149,81 @@ def test_profile_with_a_sample_not_finite_is_refused():
             wa.critical_forces("lj", 0.3, 3.0, n=16, profile=[0.0, bad, 2.0, 1.0])
 
 
+def _same_sweep(a, b):
+    for name in ("P_fc", "P_pf", "P_fc_err", "P_pf_err", "P_snap", "P_snap_err", "W_star",
+                 "W_star_err", "P_fc_peak", "P_fc_peak_err", "N", "status", "alpha", "mu"):
+        x, y = np.asarray(getattr(a, name)), np.asarray(getattr(b, name))
+        assert x.shape == y.shape and x.dtype == y.dtype and x.tobytes() == y.tobytes(), name
+    assert a.messages == b.messages
+
+
+def test_sweep_on_executors_equals_serial():
+    """One task per point on a thread pool and a process pool: the serial sweep bit for
+    bit, a failed point (mu = 0: no LJ law) included, in the broadcast shape."""
+    from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+    import multiprocessing
+    alpha, mu = [[0.3], [0.5]], [1.0, 0.0, 2.0]
+    serial = wa.critical_forces("lj", alpha, mu, n=64, errors="nan")
+    assert serial.P_fc.shape == (2, 3) and list(np.unique(serial.status)) == [0, 1]
+    with ThreadPoolExecutor(max_workers=2) as threads:
+        _same_sweep(serial, wa.critical_forces("lj", alpha, mu, n=64, errors="nan",
+                                               executor=threads))
+    with ProcessPoolExecutor(max_workers=2,
+                             mp_context=multiprocessing.get_context("spawn")) as processes:
+        _same_sweep(serial, wa.critical_forces("lj", alpha, mu, n=64, errors="nan",
+                                               executor=processes))
+        with pytest.raises(wa.InvalidArgumentError, match="mu must be > 0"):
+            wa.critical_forces("lj", alpha, mu, n=64, executor=processes)
+
+
+def test_sweep_reports_progress_per_point():
+    seen = []
+    wa.critical_forces("lj", 0.3, [1.0, 1.5, 2.0], n=64,
+                       progress=lambda done, total: seen.append((done, total)))
+    assert seen == [(0, 3), (1, 3), (2, 3), (3, 3)]
+    with pytest.raises(wa.InvalidTypeError, match="progress"):
+        wa.critical_forces("lj", 0.3, 1.0, n=64, progress="yes")
+    with pytest.raises(wa.InvalidArgumentError, match="chunk_size"):
+        wa.critical_forces("lj", 0.3, 1.0, n=64, chunk_size=0)
+
+
+def test_one_point_is_the_facade_cycle():
+    """critical_forces("lj", scalar, scalar, errors="nan") (model_error_map's cell): the
+    values of one direct facade cycle, bit for bit, and its message on failure."""
+    from wavyadhesion import _wa_f2py as _f
+    r = wa.critical_forces("lj", 0.3, 1.0, n=64, errors="nan")
+    out = _f.fa_lj_cycle(64, 0.3, 1.0, 64, 0, np.zeros(1), 1)
+    v, n_period, status = out[12], out[13], out[14]
+    assert status == 0 and int(r.N) == n_period and int(r.status) == 0
+    got = [r.P_fc, r.P_pf, r.P_snap, r.W_star, r.P_fc_err, r.P_pf_err, r.P_snap_err,
+           r.W_star_err]
+    assert np.array(got).tobytes() == v[[0, 1, 2, 3, 5, 6, 7, 8]].tobytes()
+    bad = wa.critical_forces("lj", 0.3, 0.0, n=64, errors="nan")
+    assert int(bad.status) == 1 and "mu must be > 0" in bad.messages[()]
+    assert math.isnan(float(bad.P_fc)) and int(bad.N) == 0
+
+
+@pytest.mark.skipif(os.name != "posix", reason="resource.RLIMIT_AS: POSIX")
+def test_profile_with_a_huge_n_allocates_nothing():
+    """n = 2^30 (even) is refused by the grid's cap before anything of its size is
+    allocated: the output arrays were sized by n (24 GB) and the grid allocated its N
+    points (4 GB: an abort under a memory limit). Run in a child under a 2 GB limit."""
+    import subprocess
+    import sys
+    code = ("import resource, wavyadhesion as wa\n"
+            "resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))\n"
+            "for n in (2**30, 2**31 - 2, 16386):\n"
+            "    try:\n"
+            "        wa.profile('lj', 0.3, 1.0, 0.2, n=n)\n"
+            "    except wa.WavyAdhesionError as e:\n"
+            "        assert '16384' in str(e), e\n"
+            "    else:\n"
+            "        raise SystemExit('accepted')\n"
+            "print('refused')\n")
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert res.returncode == 0 and res.stdout.strip() == "refused", res.stderr[-2000:]
+
 def test_p_fc_peak_is_the_snap_where_dw_jumps(path_auto):
     """alpha 0.3, mu 3: DW reaches full contact by a jump; LJ's snap lands with every gap
     within the peak tension's 3^(1/6) eps, so P_fc_peak (b* = 1/2) is its snap load, by a
@@ -180,3 +256,5 @@ def test_p_fc_peak_without_a_jump_lies_on_the_traced_curve():
     t = (b.h_max[i] - h_peak) / (b.h_max[i] - b.h_max[i + 1])
     assert p.P_fc_peak == pytest.approx(b.P_star[i] + t * (b.P_star[i + 1] - b.P_star[i]),
                                         abs=0.1 * (hi - lo) + 1e-12)
+
+

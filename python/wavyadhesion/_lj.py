@@ -24,6 +24,7 @@ import numpy as np
 from . import _wa_f2py as _f
 from ._args import C_INT_MAX, count_in, float_array, grown, real_scalar, shaped
 from ._errors import INVALID_ARGUMENT, OK, InvalidArgumentError, message_text, raise_status
+from ._parallel import call_interruptibly, iter_chunks, make_progress
 from ._results import ResultMixin, TupleCompat
 
 __all__ = ["LJ_EVENTS", "LJ_PATH_EVENTS", "LJBranch", "LJBranchEvent", "LJLoadPath",
@@ -41,8 +42,8 @@ LJ_PATH_EVENTS = {3: "jump_start", 4: "jump_end", 5: "full_contact_reached",
 _TRACE_CAPACITY = 2048
 # A path holds at most 64 events (wa_bem_path)
 _PATH_CAPACITY = 64
-# Largest grid (points per period) of an even profile: N/2 + 1 <= 8193 unknowns
-LJ_MAX_N = 16384
+# The grid's cap: at most 16384 points per period (lj_problem)
+_GRID_CAP = 16384
 
 
 def is_lj(model) -> bool:
@@ -368,37 +369,63 @@ def lj_gap_path(alpha, mu, n=None, profile=None, estimate=True) -> LJGapPath:
                      W_fraction=float(v[4]), W_star_err=float(v[8]))
 
 
-def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise",
-                       estimate=True, n_max=None) -> LJCriticalForces:
-    """The LJ critical values over broadcast (alpha, mu) (see :func:`critical_forces`);
-    ``n_max``: the automatic grid's cap, in [128, 16384] (None: the library's, 2048); a
-    point whose zone needs more is refused (status "output capacity too small", the
-    message naming the N it needs)."""
+def _cell(task):
+    """Worker of lj_critical_forces (module level: picklable for processes, dask, MPI): one
+    cycle's (values, N, status, message) from the facade."""
+    alpha, mu, n, use, samples, estimate, n_max = task
+    _, _, values, n_period, status, message = _cycle(alpha, mu, n, use, samples, estimate,
+                                                     n_max)
+    return values, n_period, status, message
+
+
+def _cell_interruptibly(task):
+    """_cell in a helper thread: serially, Ctrl-C stops the sweep within 0.1 s even while
+    one cycle (a second or more at the automatic grid) runs."""
+    return call_interruptibly(_cell, task)
+
+
+def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise", estimate=True,
+                       executor=None, progress=None, n_max=None) -> LJCriticalForces:
+    """The LJ critical values over broadcast (alpha, mu) (see :func:`critical_forces`): one
+    task per point, serially or on `executor`, in the order of the points (the results
+    are the serial ones bit for bit); `progress` reports the points done. ``n_max``: the
+    automatic grid's cap, in [128, 16384] (None: the library's, 2048); a point whose zone
+    needs more is refused (status "output capacity too small", the message naming the N
+    it needs)."""
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not one of 'raise', 'nan'",
                                    INVALID_ARGUMENT)
     a_arr, m_arr = np.broadcast_arrays(float_array(alpha, "alpha"), float_array(mu, "mu"))
     shape = a_arr.shape
     n, use, samples = lj_inputs(n, profile)
-    n_max = 0 if n_max is None else count_in(n_max, "n_max", 128, LJ_MAX_N)
+    n_max = 0 if n_max is None else count_in(n_max, "n_max", 128, _GRID_CAP)
     a_f, m_f = a_arr.reshape(-1), m_arr.reshape(-1)
     size = a_f.size
     vals = np.full((size, 11), np.nan)
     grid = np.zeros(size, dtype=np.int32)
     stat = np.zeros(size, dtype=np.int32)
     messages = {}
-    for k in range(size):
-        _, _, v, n_period, status, message = _cycle(float(a_f[k]), float(m_f[k]), n, use,
-                                                    samples, estimate, n_max)
-        if status != OK:
-            if errors == "raise":
-                raise_status(status, message)
-            key = tuple(int(i) for i in np.unravel_index(k, shape)) if shape else ()
-            messages[key] = message_text(message)
-            stat[k] = status
-            continue
-        vals[k] = np.concatenate([v[:9], v[11:13]])
-        grid[k] = n_period
+    tasks = [(float(a_f[k]), float(m_f[k]), n, use, samples, estimate, n_max)
+             for k in range(size)]
+    report = make_progress(progress, size, "critical_forces (lj)")
+    cells = iter_chunks(_cell_interruptibly if executor is None else _cell, tasks, executor)
+    try:
+        for k, (v, n_period, status, message) in enumerate(cells):
+            if report is not None:
+                report.update(1)
+            if status != OK:
+                if errors == "raise":
+                    raise_status(status, message)
+                key = tuple(int(i) for i in np.unravel_index(k, shape)) if shape else ()
+                messages[key] = message_text(message)
+                stat[k] = status
+                continue
+            vals[k] = np.concatenate([v[:9], v[11:13]])
+            grid[k] = n_period
+    finally:
+        cells.close()                    # on an executor: cancels what has not started
+        if report is not None:
+            report.close()
     col = {name: shaped(vals[:, i], shape) for i, name in enumerate(
         ("P_fc", "P_pf", "P_snap", "W_star", "W_fraction", "P_fc_err", "P_pf_err",
          "P_snap_err", "W_star_err", "P_fc_peak", "P_fc_peak_err"))}
@@ -417,7 +444,10 @@ def lj_profile(alpha, mu, a_star, n=None, profile=None):
     mu = real_scalar(mu, "mu")
     a_star = real_scalar(a_star, "a_star")
     n, use, samples = lj_inputs(n, profile)
-    out = grown(_f.fa_lj_profile, max(n, 2048), 3, alpha, mu, n, use, samples, a_star)
+    # N points: n itself when it is a valid grid (at most the cap 16384), else at most
+    # 2048 (the automatic grid's cap); a bad n is refused by the library, never allocated
+    out = grown(_f.fa_lj_profile, n if 2048 < n <= _GRID_CAP else 2048, 3, alpha, mu, n,
+                use, samples, a_star)
     x, t, h, n_period, state, _, _ = out
     k = int(n_period)
     return x[:k].copy(), t[:k].copy(), h[:k].copy(), k, [float(v) for v in state]

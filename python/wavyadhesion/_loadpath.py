@@ -271,12 +271,12 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
 
     Parameters
     ----------
-    model : {"westergaard", "jkr", "dw", "md"}
+    model : {"westergaard", "jkr", "dw", "md", "lj"}
         The contact model.
     alpha : array_like
         Johnson's parameter, alpha > 0.
     mu : array_like
-        Transition parameter, mu >= 0; broadcast with `alpha`.
+        Transition parameter, mu >= 0 (lj: mu > 0); broadcast with `alpha`.
     errors : {"raise", "nan"}, optional
         "raise" (default): raise at the first point that fails (an invalid alpha or mu
         before any work). "nan": compute every point; where one fails (or is invalid),
@@ -297,10 +297,12 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
         order (on an executor: as the chunks come back). None (default): nothing.
     n, profile : optional
         ``model="lj"`` only: the grid and the surface samples, as in load_path.
-        With ``model="lj"`` the points run serially (about a second each at the
-        automatic grid) and the result is an :class:`LJCriticalForces`: ``P_fc, P_pf``
-        with ``P_fc_err, P_pf_err`` (|value at N - value at N/2|), the snap load and W*
-        with theirs, and ``N``; executor, chunk_size and progress are not used.
+        With ``model="lj"`` every point is one task (one cycle: about a second at the
+        automatic grid), serially or on `executor`, and `progress` counts the points;
+        chunk_size is not used. Serially Ctrl-C stops the sweep within 0.1 s (the cycle
+        under way runs on to its end in a helper thread, its result dropped). The result
+        is an :class:`LJCriticalForces`: ``P_fc, P_pf`` with ``P_fc_err, P_pf_err``
+        (|value at N - value at N/2|), the snap load and W* with theirs, and ``N``.
 
     Returns
     -------
@@ -331,7 +333,9 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
     (array([0.977827, 0.778274, 0.387507]), array([-0.022173, -0.088714, -0.119953]))
     """
     if is_lj(model):
-        return lj_critical_forces(alpha, mu, n, profile, errors)
+        chunk_size_for(chunk_size, None, 1.0, 1)        # checked; one task per point
+        return lj_critical_forces(alpha, mu, n, profile, errors, executor=executor,
+                                  progress=progress)
     reject_lj_inputs(n, profile)
     code = model_code(model)
     if errors not in ("raise", "nan"):

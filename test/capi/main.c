@@ -1596,6 +1596,119 @@ static void test_lj(void) {
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n_points"), "lj_trace NULL n_points");
 }
 
+/* wa_lj_profile against an independent reading of wa_lj_trace: the state drawn is the
+   load-stable traced point with a* nearest the target (the rule, recomputed here from the
+   trace), the fields reproduce the state (mean traction = P*, mean gap = gbar*, the
+   fraction of nodes with h <= eps = 2 a* within a node), x* = i/N - 1/2; capacity, NULL
+   optional outputs and every refused argument. */
+static void test_lj_profile(void) {
+   enum { cap = 4000, np = 256 };
+   static double ps[cap], gb[cap], as[cap], bs[cap];
+   static int sl[cap];
+   double x[np], t[np], h[np], x2[np], t2[np], h2[np], state[4], state2[4];
+   const double targets[5] = {0.0, 0.1, 0.2, 0.37, 0.5};
+   const double eps = cbrt(4.0 * pow(0.3, 4)) / 3.0; /* eps/Delta at alpha 0.3, mu 3 */
+   int st, n_pts = -1, n_trace = -1, i, k, best, inside, ok;
+   double miss, mean_t, mean_h;
+   char msg[256];
+   st = wa_lj_trace(0.3, 3.0, np, 0, NULL, cap, ps, gb, as, bs, sl, NULL, NULL, &n_trace,
+                    NULL, msg, 256);
+   CHECK(st == WA_OK, "lj_profile: the reference trace %d '%s'", st, msg);
+   if (st != WA_OK) return;
+   for (k = 0; k < 5; k++) {
+      strcpy(msg, "x");
+      st = wa_lj_profile(0.3, 3.0, np, 0, NULL, targets[k], np, x, t, h, state, &n_pts, msg,
+                         256);
+      CHECK(st == WA_OK && n_pts == np && msg[0] == '\0', "lj_profile a* %g: %d %d '%s'",
+            targets[k], st, n_pts, msg);
+      if (st != WA_OK) continue;
+      for (i = 0, best = -1, miss = INFINITY; i < n_trace; i++) /* the rule, by hand */
+         if (sl[i] && fabs(as[i] - targets[k]) < miss) miss = fabs(as[i] - targets[k]), best = i;
+      CHECK(best >= 0 && state[0] == as[best] && state[1] == bs[best] && state[2] == ps[best] &&
+               state[3] == gb[best],
+            "lj_profile a* %g: state (%g %g %g %g) is not trace point %d", targets[k],
+            state[0], state[1], state[2], state[3], best);
+      for (i = 0, mean_t = 0, mean_h = 0, inside = 0, ok = 1; i < np; i++) {
+         mean_t += t[i] / np;
+         mean_h += h[i] / np;
+         inside += h[i] <= eps;
+         ok = ok && isfinite(t[i]) && h[i] >= 0 && fabs(x[i] - ((double)i / np - 0.5)) < 1e-15;
+      }
+      CHECK(ok && fabs(mean_t - state[2]) < 1e-9 && fabs(mean_h - state[3]) < 1e-12 &&
+               fabs(inside / (2.0 * np) - state[0]) <= 1.0 / np,
+            "lj_profile a* %g: fields vs state: P* %g mean %g, gbar %g mean %g, a* %g nodes %g",
+            targets[k], state[2], mean_t, state[3], mean_h, state[0], inside / (2.0 * np));
+   }
+   CHECK(state[0] == 0.5, "lj_profile a* 1/2 draws full contact: a* %g", state[0]);
+   /* NULL state: the same fields; capacity 5: the first 5 points, N and the state */
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, 0.5, np, x2, t2, h2, NULL, &n_pts, NULL, 0);
+   CHECK(st == WA_OK && same_d(x2, x, np) && same_d(t2, t, np) && same_d(h2, h, np),
+         "lj_profile with NULL state differs: %d", st);
+   for (i = 0; i < np; i++) x2[i] = t2[i] = h2[i] = -7;
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, 0.5, 5, x2, t2, h2, state2, &n_pts, msg, 256);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n_pts == np && same_d(x2, x, 5) && same_d(t2, t, 5) &&
+            same_d(h2, h, 5) && x2[5] == -7 && same_d(state2, state, 4) &&
+            strstr(msg, "capacity = 5"),
+         "lj_profile capacity 5: %d %d '%s'", st, n_pts, msg);
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, 0.5, 0, NULL, NULL, NULL, NULL, &n_pts, msg, 256);
+   CHECK(st == WA_CAPACITY_TOO_SMALL && n_pts == np, "lj_profile count query %d %d", st, n_pts);
+
+   /* the smallest subnormal a* is valid: the state of a* = 0 */
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, 0.0, np, x, t, h, state, &n_pts, NULL, 0);
+   st += 10 * wa_lj_profile(0.3, 3.0, np, 0, NULL, 5e-324, np, x2, t2, h2, state2, &n_pts,
+                            NULL, 0);
+   CHECK(st == WA_OK && same_d(state, state2, 4) && same_d(h, h2, np),
+         "lj_profile a* = 5e-324 is not the state of a* = 0: %d", st);
+   /* refused: the status, the argument named, *n_points 0, state NaN, arrays untouched */
+   {
+      const struct { double alpha, mu, a; int n, n_prof, capacity, null_x, null_np;
+                     const char *name; } bad[] = {
+         {0.3, 3.0, NAN, np, 0, np, 0, 0, "a_star"},
+         {0.3, 3.0, -0.1, np, 0, np, 0, 0, "a_star"},
+         {0.3, 3.0, 0.7, np, 0, np, 0, 0, "a_star"},
+         {0.3, 3.0, INFINITY, np, 0, np, 0, 0, "a_star"},
+         {0.3, 3.0, 1e300, np, 0, np, 0, 0, "a_star"},
+         {0.3, 3.0, -5e-324, np, 0, np, 0, 0, "a_star"},
+         {NAN, 3.0, 0.2, np, 0, np, 0, 0, "alpha"},
+         {1e300, 3.0, 0.2, np, 0, np, 0, 0, "alpha"},
+         {5e-324, 3.0, 0.2, np, 0, np, 0, 0, "alpha"},
+         {0.3, 0.0, 0.2, np, 0, np, 0, 0, "mu"},
+         {0.3, INFINITY, 0.2, np, 0, np, 0, 0, "mu"},
+         {0.3, 5e-324, 0.2, np, 0, np, 0, 0, "mu"},
+         {0.3, 3.0, 0.2, 255, 0, np, 0, 0, "n"},
+         {0.3, 3.0, 0.2, 6, 0, np, 0, 0, "n"},
+         {0.3, 3.0, 0.2, -8, 0, np, 0, 0, "n"},
+         {0.3, 3.0, 0.2, 1 << 30, 0, np, 0, 0, "n"},
+         {0.3, 3.0, 0.2, np, 3, np, 0, 0, "n_profile"},
+         {0.3, 3.0, 0.2, np, 4, np, 0, 0, "profile"},
+         {0.3, 3.0, 0.2, np, 0, -1, 0, 0, "capacity"},
+         {0.3, 3.0, 0.2, np, 0, np, 1, 0, "x_star"},
+         {0.3, 3.0, 0.2, np, 0, np, 0, 1, "n_points"}};
+      const double nan_prof[4] = {0.0, NAN, 2.0, 1.0};
+      for (k = 0; k < (int)(sizeof bad / sizeof bad[0]); k++) {
+         for (i = 0; i < np; i++) x2[i] = -7;
+         n_pts = -1;
+         state2[0] = 1;
+         st = wa_lj_profile(bad[k].alpha, bad[k].mu, bad[k].n, bad[k].n_prof,
+                            bad[k].n_prof == 4 ? nan_prof : (bad[k].n_prof ? x : NULL), bad[k].a,
+                            bad[k].capacity, bad[k].null_x ? NULL : x2, t2, h2, state2,
+                            bad[k].null_np ? NULL : &n_pts, msg, 256);
+         CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, bad[k].name) && isnan(state2[0]) &&
+                  (bad[k].null_np || n_pts == 0) && x2[0] == -7,
+               "lj_profile bad case %d (%s): status %d n %d '%s'", k, bad[k].name, st, n_pts,
+               msg);
+      }
+   }
+   /* the message buffer: capacity 0 and NULL copy nothing, 1 only the NUL */
+   strcpy(msg, "untouched");
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, NAN, np, x2, t2, h2, NULL, &n_pts, msg, 0);
+   CHECK(st == WA_INVALID_ARGUMENT && strcmp(msg, "untouched") == 0, "message_capacity 0");
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, NAN, np, x2, t2, h2, NULL, &n_pts, msg, 1);
+   CHECK(st == WA_INVALID_ARGUMENT && msg[0] == '\0', "message_capacity 1: '%s'", msg);
+   st = wa_lj_profile(0.3, 3.0, np, 0, NULL, NAN, np, x2, t2, h2, NULL, &n_pts, NULL, 256);
+   CHECK(st == WA_INVALID_ARGUMENT, "NULL message");
+}
+
 int main(void) {
    test_version();
    test_closed_forms();
@@ -1629,6 +1742,7 @@ int main(void) {
    test_gap_critical();
    test_compat_forwards();
    test_lj();
+   test_lj_profile();
    printf("%d passed, %d failed\n", n_pass, n_fail);
    return n_fail == 0 ? 0 : 1;
 }

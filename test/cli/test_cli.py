@@ -1106,6 +1106,46 @@ def test_lj_what_does_not_apply_exits_2(cli, args, needle):
     assert res.stdout == ""
 
 
+@pytest.mark.parametrize("args, alternative", [
+    (["point", "--model", "lj", "--a-star", "0.1"], "'profile --model lj --a-star X'"),
+    (["map", "--model", "lj"], "'critical --model lj"),
+    (["gaplaw", "--model", "lj", "--gbar-range", "0:1:3"], "'branch --model lj'"),
+])
+def test_lj_refusal_names_the_alternative(cli, args, alternative):
+    """point, map and gaplaw refuse --model lj and say which subcommand gives it."""
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2 and alternative in res.stderr and res.stdout == ""
+
+
+def test_lj_profile_a_star_ends_and_subnormal(cli):
+    """--a-star 0 and 1/2 draw the ends of the load-stable curve (a* = 1/2: full contact,
+    every gap within the law's range eps); the smallest subnormal is the state of 0."""
+    base = ["profile", "--model", "lj", "--alpha", "0.3", "--mu", "1", "--n", "64",
+            "--format", "json"]
+    full = json.loads(run(cli, *base, "--a-star", "0.5").stdout)
+    eps = (4 * 0.3**4) ** (1 / 3) / 1.0
+    assert full["values"]["a_star"] == 0.5 and max(full["data"]["gap"]) <= eps
+    zero = json.loads(run(cli, *base, "--a-star", "0").stdout)
+    tiny = json.loads(run(cli, *base, "--a-star", "4.9e-324").stdout)
+    assert zero["values"] == tiny["values"] and zero["data"] == tiny["data"]
+    res = run(cli, *base, "--a-star", "1e300", check=False)
+    assert res.returncode == 2 and "--a-star" in res.stderr and "[0, 1/2]" in res.stderr
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["profile", "--model", "lj", "--a-star", "0.2", "--n", "100000"], "16384"),
+    (["branch", "--model", "lj", "--n", "20000"], "16384"),
+    (["critical", "--model", "lj", "--mu-range", "1:2:2", "--n", "20000"], "16384"),
+    (["path", "--model", "lj", "--alpha", "1e-6"], "pass n explicitly"),
+])
+def test_lj_grid_cap_is_a_usage_error(cli, args, needle):
+    """A grid cap exceeded (--n too large, or the automatic grid beyond its cap, which --n
+    resolves) is the caller's argument: exit 2 (it was 'output capacity too small', exit 1),
+    as the C face's WA_INVALID_ARGUMENT."""
+    res = run(cli, *args, check=False)
+    assert res.returncode == 2 and needle in res.stderr and res.stdout == ""
+
+
 def test_lj_bad_profile_line_exits_2(cli, tmp_path):
     f = tmp_path / "bad.txt"
     f.write_text("0\n0.5\nabc\n1\n")

@@ -26,7 +26,9 @@
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
  *    against wa_critical_forces, the closed-form loads against their formulas, wa_gap_critical
  *    against wa_gap_path (g_touch, interaction lost), wa_critical_forces (P_min <= P_pf) and
- *    wa_gap_law (P_retract at gbar*(P_min) is P_min; P* = 0 beyond the interaction).
+ *    wa_gap_law (P_retract at gbar*(P_min) is P_min; P* = 0 beyond the interaction),
+ *    wa_lj_profile against wa_lj_trace (its state is the load-stable traced point with a*
+ *    nearest the target) and against its own fields (mean traction P*, mean gap gbar*).
  * Violations of the known open defects of KNOWN_DEFECTS (an allow-list, removed as their
  * fixes are merged) are counted and printed as KNOWN but do not fail the run (--strict:
  * they do).
@@ -71,8 +73,11 @@ enum {
    F_WESTERGAARD_LOAD, F_JKR_LOAD, F_EQUILIBRIUM, F_ROOTS, F_TRACE_BRANCH,
    F_CRITICAL_FORCES, F_LOAD_PATH, F_CRITICAL_SWEEP, F_STATUS_MESSAGE, F_VERSION,
    F_EQUILIBRIUM_GAP, F_ROOTS_GAP, F_TRACE_BRANCH_GAP, F_PROFILE, F_GAP_PATH, F_GAP_LAW,
-   F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, F_LJ_CYCLE, F_LJ_TRACE, N_FAMILY
+   F_GAP_CRITICAL, F_SWEEP_STATUS, F_MAP, F_MAP_CONTROL, F_LJ_CYCLE, F_LJ_TRACE, F_LJ_PROFILE,
+   N_FAMILY
 };
+/* The smooth-adhesion functions (no model argument, n and profile). */
+static int is_lj(int f) { return f == F_LJ_CYCLE || f == F_LJ_TRACE || f == F_LJ_PROFILE; }
 /* Function ids: a family, whether its 0.2 compatibility name is called (else the 0.3
    function) and whether a message buffer is passed (4 ids per family). The family's 0.3
    function, "+gbar": with the optional output (which may still be NULL), "+rows": with
@@ -83,7 +88,7 @@ static const char *family_name[N_FAMILY] = {
    "wa_critical_forces", "wa_load_path", "wa_critical_sweep", "wa_status_message",
    "wa_version", "wa_equilibrium+gbar", "wa_roots+gbar", "wa_trace_branch+gbar", "wa_profile",
    "wa_gap_path", "wa_gap_law", "wa_gap_critical", "wa_critical_sweep+rows",
-   "wa_adhesion_map", "wa_adhesion_map(60)", "wa_lj_cycle", "wa_lj_trace"};
+   "wa_adhesion_map", "wa_adhesion_map(60)", "wa_lj_cycle", "wa_lj_trace", "wa_lj_profile"};
 /* The 0.2 compatibility names of each family: [0] without, [1] with a message (NULL:
    none; the 0.2 base names without a message are gone). */
 static const char *compat_name[N_FAMILY][2] = {
@@ -94,18 +99,18 @@ static const char *compat_name[N_FAMILY][2] = {
    {"wa_trace_branch_gap", "wa_trace_branch_gap_msg"}, {NULL, "wa_profile_msg"},
    {NULL, "wa_gap_path_msg"}, {NULL, "wa_gap_law_msg"}, {NULL, "wa_gap_critical_msg"},
    {NULL, "wa_critical_sweep_status"}, {NULL, NULL}, {"wa_adhesion_map_control", NULL},
-   {NULL, NULL}, {NULL, NULL}};
+   {NULL, NULL}, {NULL, NULL}, {NULL, NULL}};
 /* 0: no message (the closed forms, wa_adhesion_map_control); 1: with and without a message
    buffer (half the calls each); 2: always with one (wa_critical_sweep_status and the
    0.3 sweep with row_status). */
 static const int has_msg[N_FAMILY] = {0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 2,
-                                      1, 0, 1, 1};
+                                      1, 0, 1, 1, 1};
 /* Relative frequency of each family (the slow ones are rarer, see doc/testing.md; the maps
    cost 10-200 ms per alpha: about 50 calls each per 10^5, an eighth of them valid; the
    smooth-adhesion functions 20-130 ms per call on the usual grids: about 50 each, a
    quarter of them valid). */
 static const int family_weight[N_FAMILY] = {96, 128, 576, 480, 24, 24, 24, 16, 48, 8, 192, 160,
-                                             8, 96, 24, 16, 16, 16, 1, 1, 1, 1};
+                                             8, 96, 24, 16, 16, 16, 1, 1, 1, 1, 1};
 
 /* The printed name of function id fn (the 0.3 functions: " msg" when a buffer is passed). */
 static const char *fn_name(int fn) {
@@ -582,7 +587,8 @@ static void make_repro(call_t *c) {
       break;
    }
    case F_LJ_CYCLE:
-   case F_LJ_TRACE: {
+   case F_LJ_TRACE:
+   case F_LJ_PROFILE: {
       char pr[400];
       if (c->n_prof == 0) {
          strcpy(pr, "NULL");
@@ -600,6 +606,11 @@ static void make_repro(call_t *c) {
                  ptr_name(c, 0, "&P_fc"), ptr_name(c, 1, "&P_pf"), ptr_name(c, 2, "&P_snap"),
                  ptr_name(c, 3, "&W"), ptr_name(c, 4, "errors"), ptr_name(c, 5, "&n_used"),
                  msgpart);
+      else if (c->family == F_LJ_PROFILE)
+         sprintf(c->repro, "wa_lj_profile(%s, %s, %s, %s, %s, %s, %d, %s, %s, %s, %s, %s%s)",
+                 cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid), ci(mcap, c->n_profile), pr,
+                 cd(mu, c->a), c->capacity, ptr_name(c, 0, "x"), ptr_name(c, 1, "t"),
+                 ptr_name(c, 2, "h"), ptr_name(c, 3, "state"), ptr_name(c, 4, "&n"), msgpart);
       else
          sprintf(c->repro, "wa_lj_trace(%s, %s, %s, %s, %s, %d, %s, %s, %s, %s, %s, %s, %s, %s, "
                  "%s%s)", cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid),
@@ -686,20 +697,27 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    }
 }
 
-/* The arguments of wa_lj_cycle / wa_lj_trace (alpha, mu, capacity and the message from
-   gen_call): n mostly 16, 32 or 64, else adversarial (0, the automatic grid of ~1 s, only
-   rarely); the sinusoid (NULL) mostly, else a few samples of one (sometimes shifted: an
-   uneven profile; sometimes < 4 samples or one not finite); NULL pointers. Pointer bits:
-   cycle 0-3 P_fc P_pf P_snap W_star, 4 errors, 5 n_used; trace 0-3 P_star gbar a_star
-   b_star, 4-6 stable_load stable_gap event, 7 n_points, 8 n_used. */
+/* The arguments of wa_lj_cycle / wa_lj_trace / wa_lj_profile (alpha, mu, a*, capacity
+   and the message from gen_call): n mostly 16, 32 or 64, else adversarial (0, the
+   automatic grid of ~1 s, only rarely); the sinusoid (NULL) mostly, else a few samples of
+   one (sometimes shifted: an uneven profile; sometimes < 4 samples or one not finite); NULL
+   pointers; the profile's a* broken too. Pointer bits: cycle 0-3 P_fc P_pf P_snap W_star,
+   4 errors, 5 n_used; trace 0-3 P_star gbar a_star b_star, 4-6 stable_load stable_gap
+   event, 7 n_points, 8 n_used; profile 0-2 x_star traction gap, 3 state, 4 n_points. */
 static int lj_bad_n(const call_t *c);
 static int lj_bad_profile(const call_t *c);
 static void gen_lj(rng_t *r, call_t *c, int valid) {
    static const int bad_n[] = {-1, -16, 7, 8, 10, 12, 15, 17, 250, 16388, 100000, INT_MAX,
                                INT_MIN};
    static const int np[] = {4, 5, 8, 16, 2, 3, 0, -1, INT_MIN};
+   static const double bad_a[] = {NAN, -NAN, INFINITY, -INFINITY, -DBL_TRUE_MIN, -1e-300,
+                                  0x1.0000000000001p-1, 0.7, 1e300, DBL_MAX};
    double u = unif(r), shift;
-   int k, trace = c->family == F_LJ_TRACE;
+   int k, trace = c->family == F_LJ_TRACE, prof = c->family == F_LJ_PROFILE;
+   /* pointer bits: all, optional, required (the arrays only when capacity > 0) */
+   unsigned all = trace ? 0x1FFu : prof ? 0x1Fu : 0x3Fu;
+   unsigned opt = trace ? 0x170u : prof ? 0x08u : 0x30u;
+   unsigned arrays = trace ? 0x0Fu : prof ? 0x07u : 0x0Fu;
    int broken = !valid && unif(r) < 0.85; /* break one argument (the others mostly run) */
    valid = valid && unif(r) < 0.3; /* valid calls cost 20-130 ms: a sixth of them */
    c->model = WA_MODEL_LJ;
@@ -726,21 +744,29 @@ static void gen_lj(rng_t *r, call_t *c, int valid) {
    if (c->n_prof < 0) c->n_prof = 0;
    c->capacity = unif(r) < 0.6 ? 512 + below(r, 2000) : unif(r) < 0.7 ? below(r, 40)
                : valid ? 0 : (const int[]){0, -1, INT_MIN}[below(r, 3)];
-   if (c->capacity == 0 && unif(r) < 0.8) c->null_mask |= 0x7Fu; /* asks for the count */
+   if (c->capacity == 0 && unif(r) < 0.8)  /* asks for the count */
+      c->null_mask |= prof ? 0x0Fu : 0x7Fu;
    if (c->null_mask == 0 || unif(r) < 0.5) /* the optional outputs NULL or not */
-      c->null_mask |= (trace ? 0x170u : 0x30u) & (unsigned)next_u64(r);
+      c->null_mask |= opt & (unsigned)next_u64(r);
    if (!valid && unif(r) < 0.15)
-      c->null_mask |= unif(r) < 0.8 ? 1u << below(r, trace ? 9 : 6)
-                                    : (unsigned)next_u64(r) & (trace ? 0x1FFu : 0x3Fu);
-   if (valid) c->null_mask &= trace ? (c->capacity > 0 ? 0x170u : 0x17Fu) : 0x30u;
-   if (broken && !lj_bad_n(c) && !lj_bad_profile(c) && c->mu != 0 && !(c->null_mask & 15u)) {
-      switch (below(r, 5)) {
-      case 0: c->n_grid = bad_n[below(r, 13)]; if (c->n_grid == 250 && trace) c->n_grid = 7; break;
+      c->null_mask |= unif(r) < 0.8 ? 1u << below(r, trace ? 9 : prof ? 5 : 6)
+                                    : (unsigned)next_u64(r) & all;
+   if (valid) c->null_mask &= c->family == F_LJ_CYCLE || c->capacity > 0 ? opt : opt | arrays;
+   if (broken && !lj_bad_n(c) && !lj_bad_profile(c) && c->mu != 0 &&
+       !(c->null_mask & (prof ? 0x17u : 15u))) {
+      switch (below(r, prof ? 6 : 5)) {
+      case 0: c->n_grid = bad_n[below(r, 13)]; if (c->n_grid == 250 && !prof && trace) c->n_grid = 7;
+              if (c->n_grid == 250 && prof) c->n_grid = 9; break;
       case 1: c->mu = unif(r) < 0.5 ? 0.0 : special(r); break;
       case 2: c->alpha = special(r); break;
-      case 3: c->null_mask |= 1u << below(r, 4); if (trace && c->capacity == 0) c->capacity = -1; break;
-      case 4: if (trace) { c->capacity = unif(r) < 0.5 ? -1 : INT_MIN; break; }
+      case 3: c->null_mask |= prof ? (const unsigned[]){1u, 2u, 4u, 16u}[below(r, 4)]
+                                   : 1u << below(r, 4);
+              if (!prof && trace && c->capacity == 0) c->capacity = -1;
+              if (prof && c->capacity == 0 && !(c->null_mask & 16u)) c->capacity = -1;
+              break;
+      case 4: if (trace || prof) { c->capacity = unif(r) < 0.5 ? -1 : INT_MIN; break; }
               c->mu = -log_unif(r, 1e-6, 1e6); break;
+      case 5: c->a = bad_a[below(r, 10)]; break;
       }
    }
 }
@@ -802,7 +828,7 @@ static void gen_call(long index, call_t *c) {
    if (k == F_SWEEP_STATUS && c->null_mask)  /* six pointers: mu, 4 outputs, row_status */
       c->null_mask = unif(&r) < 0.8 ? 1u << below(&r, 6) : (unsigned)next_u64(&r) & 0x3Fu;
    if (k == F_MAP || k == F_MAP_CONTROL) gen_map(&r, c, valid);
-   if (k == F_LJ_CYCLE || k == F_LJ_TRACE) {
+   if (is_lj(k)) {
       c->null_mask = 0;
       if (valid && c->mu == 0) c->mu = log_unif(&r, 1e-2, 30.0); /* mu = 0: no LJ law */
       gen_lj(&r, c, valid);
@@ -1734,8 +1760,9 @@ static void check_gap_critical(const call_t *c, int st, int invalid) {
 
 /* wa_lj_cycle: P_fc, P_pf, P_snap, W_star in dbuf[0][0..3], errors in dbuf[1], n_used in
    iscalar[0]; wa_lj_trace: P_star, gbar, a_star, b_star in dbuf[0..3], stable_load,
-   stable_gap, event in ibuf[0..2], n_points and n_used in iscalar[0..1]. The samples are
-   passed from lj_prof (read only). */
+   stable_gap, event in ibuf[0..2], n_points and n_used in iscalar[0..1]; wa_lj_profile:
+   x_star, traction, gap in dbuf[0..2], state[4] in dbuf[3] (its buffers filled to at least
+   4 elements), n_points in iscalar[0]. The samples are passed from lj_prof (read only). */
 static double lj_prof[16];
 
 static int run_lj(const call_t *c, int msg) {
@@ -1747,6 +1774,12 @@ static int run_lj(const call_t *c, int msg) {
       return wa_lj_cycle(c->alpha, c->mu, c->n_grid, c->n_profile, prof, P(0, D(0)),
                          P(1, D(0) + 1), P(2, D(0) + 2), P(3, D(0) + 3), P(4, D(1)),
                          P(5, IS(0)), NMSG(c, msg));
+   }
+   if (c->family == F_LJ_PROFILE) {
+      fill_buffers(c->capacity > 4 ? c->capacity : 4);
+      return wa_lj_profile(c->alpha, c->mu, c->n_grid, c->n_profile, prof, c->a, c->capacity,
+                           P(0, D(0)), P(1, D(1)), P(2, D(2)), P(3, D(3)), P(4, IS(0)),
+                           NMSG(c, msg));
    }
    fill_buffers(c->capacity);
    return wa_lj_trace(c->alpha, c->mu, c->n_grid, c->n_profile, prof, c->capacity, P(0, D(0)),
@@ -1770,7 +1803,7 @@ static int lj_bad_profile(const call_t *c) {
    (n = 0) beyond 2048 points for these (alpha, mu), or an n beyond 2048 on an uneven
    profile. */
 static int lj_cap_message(const call_t *c, const char *m) {
-   return !strncmp(m, "lj: ", 4) && (c->n_grid == 0 || c->n_grid > 2048);
+   return is_lj(c->family) && !strncmp(m, "lj: ", 4) && (c->n_grid == 0 || c->n_grid > 2048);
 }
 
 static void check_lj_cycle(const call_t *c, int st, int invalid) {
@@ -1842,6 +1875,64 @@ static void check_lj_trace(const call_t *c, int st, int invalid) {
    if (cap > 0) check_untouched(c, 4, 3, m, cap);
 }
 
+/* wa_lj_profile: on failure *n_points 0, state NaN, the arrays untouched; on success N as
+   asked (or an automatic grid), the state a traced one (a*, b* in [0, 1/2], b* >= a*,
+   gbar* >= 0), x*[i] = i/N - 1/2, finite tractions, gaps >= 0 and, with every point
+   written, fields that reproduce the state: mean traction P*, mean gap gbar*, and the nodes
+   with h <= eps (eps/Delta = (4 alpha^4)^(1/3)/mu) 2 a* N within one node. */
+static void check_lj_profile(const call_t *c, int st, int invalid) {
+   unsigned nm = c->null_mask;
+   int n = *IS(0), k, m, cap = c->capacity, inside = 0;
+   const double *x = D(0), *t = D(1), *h = D(2), *s = D(3);
+   double mean_t = 0, mean_h = 0, eps = cbrt(4.0 * pow(c->alpha, 4)) / c->mu;
+   check_status(c, st, 0x3F, invalid);
+   if (memcmp(lj_prof, c->prof, sizeof lj_prof) != 0)
+      violation(c, K_OVERRUN, "the input profile was modified");
+   for (k = cap < 0 ? 0 : cap; k < 4; k++) /* below 4 elements the tail guards start at 4 */
+      if (!is_dsent(x[k]) || !is_dsent(t[k]) || !is_dsent(h[k])) {
+         violation(c, K_OVERRUN, "element %d of an array of capacity %d written", k, cap);
+         break;
+      }
+   if (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) {
+      if (!(nm & 16u) && n != 0) violation(c, K_FAIL_OUTPUT, "status %d with n_points %d", st, n);
+      if (!(nm & 8u) && !(isnan(s[0]) && isnan(s[1]) && isnan(s[2]) && isnan(s[3])))
+         violation(c, K_FAIL_OUTPUT, "status %d with state %.17g %.17g %.17g %.17g", st, s[0],
+                   s[1], s[2], s[3]);
+      if (cap > 0) check_untouched(c, 3, 0, 0, cap);
+      return;
+   }
+   if (nm & 16u) return;
+   if ((c->n_grid != 0 ? n != c->n_grid : n < 8 || n % 2 != 0 || n > 2048) ||
+       (st == WA_OK && n > cap) || (st == WA_CAPACITY_TOO_SMALL && n <= cap))
+      violation(c, K_COUNT, "status %d with n_points %d (n %d), capacity %d", st, n, c->n_grid,
+                cap);
+   if (!(nm & 8u) && !(valid_a(s[0]) && valid_a(s[1]) && s[1] >= s[0] && isfinite(s[2]) &&
+                       s[3] >= 0 && isfinite(s[3])))
+      violation(c, K_STATE, "state a* %.17g b* %.17g P* %.17g gbar %.17g", s[0], s[1], s[2],
+                s[3]);
+   m = n < cap ? n : cap;
+   if (m > FILL) m = FILL;
+   if (m < 0) m = 0;
+   for (k = 0; k < m; k++) {
+      if (!(isfinite(t[k]) && h[k] >= 0 && isfinite(h[k]) &&
+            fabs(x[k] - ((double)k / n - 0.5)) <= 1e-15)) {
+         violation(c, K_STATE, "point %d of %d: x* %.17g traction %.17g gap %.17g", k, n, x[k],
+                   t[k], h[k]);
+         return;
+      }
+      mean_t += t[k] / n;
+      mean_h += h[k] / n;
+      inside += h[k] <= eps;
+   }
+   if (m == n && !(nm & 8u) &&
+       !(fabs(mean_t - s[2]) <= 1e-9 * (1 + fabs(s[2])) && fabs(mean_h - s[3]) <= 1e-12 * (1 + s[3]) &&
+         fabs(inside / (2.0 * n) - s[0]) <= 1.0 / n))
+      violation(c, K_INCONSISTENT, "fields vs state: P* %.17g mean traction %.17g, gbar %.17g "
+                "mean gap %.17g, a* %.17g nodes with h <= eps %d of %d", s[2], mean_t, s[3],
+                mean_h, s[0], inside, n);
+   if (cap > 0) check_untouched(c, 3, 0, m, cap);
+}
+
 /* ------------------------------------------------------ the whole message */
 
 static int run_family(const call_t *c, int msg);
@@ -1864,6 +1955,7 @@ static unsigned family_args(int f) {
    case F_GAP_LAW: return base | A_N | A_GBAR;
    case F_LJ_CYCLE: return A_ALPHA | A_MU | A_N;
    case F_LJ_TRACE: return A_ALPHA | A_MU | A_N | A_CAP;
+   case F_LJ_PROFILE: return A_ALPHA | A_MU | A_N | A_CAP | A_A;
    }
    return 0;
 }
@@ -1876,7 +1968,7 @@ static int names_bad_argument(const call_t *c, const char *m) {
    int len = 0, idx = -1, k, bad;
    unsigned args = family_args(c->family);
    if (strstr(m, "must not be NULL")) return c->null_mask != 0;
-   if ((c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) && lj_cap_message(c, m)) return 1;
+   if (lj_cap_message(c, m)) return 1;
    if (c->family == F_MAP || c->family == F_MAP_CONTROL) {
       /* the map's own checks ("adhesion_map: every alpha must be in ...") */
       if (!strncmp(m, "adhesion_map: ", 14)) m += 14;
@@ -1900,13 +1992,14 @@ static int names_bad_argument(const call_t *c, const char *m) {
    }
    name[len] = 0;
    if (m[len] == '[') idx = atoi(m + len + 1);
-   if (c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) { /* mu = 0 has no LJ law */
+   if (is_lj(c->family)) { /* mu = 0 has no LJ law */
       if (!strcmp(name, "alpha")) return !valid_alpha(c->alpha);
       if (!strcmp(name, "mu")) return !valid_mu(c->mu) || c->mu == 0;
       if (!strcmp(name, "n")) return lj_bad_n(c);
       if (!strcmp(name, "n_profile")) return c->n_prof > 0 && c->n_profile < 4;
       if (!strcmp(name, "profile")) return lj_bad_profile(c);
-      if (!strcmp(name, "capacity")) return c->family == F_LJ_TRACE && c->capacity < 0;
+      if (!strcmp(name, "capacity")) return c->family != F_LJ_CYCLE && c->capacity < 0;
+      if (!strcmp(name, "a_star")) return c->family == F_LJ_PROFILE && !valid_a(c->a);
       return 0;
    }
    if (!strcmp(name, "model")) return (args & A_MODEL) && !valid_model(c->model);
@@ -1964,8 +2057,7 @@ static void check_full_message(const call_t *c, int st, int invalid) {
       return;
    }
    if (st != WA_INVALID_ARGUMENT) return;
-   if (!invalid && !((c->family == F_LJ_CYCLE || c->family == F_LJ_TRACE) &&
-                     lj_cap_message(c, full_msg)))
+   if (!invalid && !lj_cap_message(c, full_msg))
       violation(c, K_VALID_REJECTED, "WA_INVALID_ARGUMENT: '%s'", full_msg);
    else if (!names_bad_argument(c, full_msg))
       violation(c, K_WRONG_ARGUMENT, "'%s'", full_msg);
@@ -2038,6 +2130,10 @@ static int is_invalid(const call_t *c) {
    case F_LJ_TRACE:
       return !valid_alpha(c->alpha) || !valid_mu(c->mu) || c->mu == 0 || lj_bad_n(c) ||
              lj_bad_profile(c) || (nm & 128u) || cap < 0 || (cap > 0 && (nm & 15u));
+   case F_LJ_PROFILE:
+      return !valid_alpha(c->alpha) || !valid_mu(c->mu) || c->mu == 0 || lj_bad_n(c) ||
+             lj_bad_profile(c) || !valid_a(c->a) || (nm & 16u) || cap < 0 ||
+             (cap > 0 && (nm & 7u));
    case F_SWEEP_STATUS:
    case F_CRITICAL_SWEEP: {
       int k, bad = !valid_model(c->model) || !valid_alpha(c->alpha) || c->n_mu < 0 ||
@@ -2080,7 +2176,8 @@ static int run_family(const call_t *c, int msg) {
    case F_GAP_LAW: return run_gap_law(c, msg);
    case F_GAP_CRITICAL: return run_gap_critical(c, msg);
    case F_LJ_CYCLE:
-   case F_LJ_TRACE: return run_lj(c, msg);
+   case F_LJ_TRACE:
+   case F_LJ_PROFILE: return run_lj(c, msg);
    }
    return -1;
 }
@@ -2108,6 +2205,7 @@ static void check_family(const call_t *c, int st, int invalid) {
    case F_GAP_CRITICAL: check_gap_critical(c, st, invalid); break;
    case F_LJ_CYCLE: check_lj_cycle(c, st, invalid); break;
    case F_LJ_TRACE: check_lj_trace(c, st, invalid); break;
+   case F_LJ_PROFILE: check_lj_profile(c, st, invalid); break;
    }
 }
 
@@ -2126,6 +2224,11 @@ static int used_elements(const call_t *c, int st) {
       if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 128u)) return 0;
       n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
       return n < 0 ? 0 : n;
+   }
+   if (f == F_LJ_PROFILE) { /* at least the state's 4 elements */
+      n = (st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 16u) ? 0
+          : *IS(0) < c->capacity ? *IS(0) : c->capacity;
+      return n < 4 ? 4 : n;
    }
    if (f == F_GAP_PATH) {
       if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 0x80u)) return 0;
@@ -2157,6 +2260,7 @@ static int filled_elements(const call_t *c) {
    if (c->family == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
    if (c->family == F_LJ_CYCLE) return 4;
    if (c->family == F_LJ_TRACE) return c->capacity > 0 ? c->capacity : 0;
+   if (c->family == F_LJ_PROFILE) return c->capacity > 4 ? c->capacity : 4;
    return 0;
 }
 
@@ -2238,6 +2342,27 @@ static void run_version(const call_t *c) {
 
 /* Cross checks after a successful call (extra library calls, same watchdog). */
 static void cross_check(const call_t *c, int st, rng_t *r) {
+   if (c->family == F_LJ_PROFILE && st == WA_OK && !(c->null_mask & 8u) && unif(r) < 0.3) {
+      /* the state is the load-stable traced point with a* nearest the target (all points
+         when none is load-stable), the first on a tie: the rule, by hand on the trace */
+      enum { TCAP = 20000 };
+      static double tp[TCAP], tg[TCAP], ta[TCAP], tb[TCAP];
+      static int ts[TCAP];
+      double s[4], miss = INFINITY;
+      int n = 0, st2, k, best = -1, any = 0;
+      memcpy(s, D(3), sizeof s);
+      lib_call();
+      st2 = wa_lj_trace(c->alpha, c->mu, c->n_grid, c->n_profile, c->n_prof > 0 ? c->prof : NULL,
+                        TCAP, tp, tg, ta, tb, ts, NULL, NULL, &n, NULL, NULL, 0);
+      for (k = 0; k < n && st2 == WA_OK; k++) any = any || ts[k];
+      for (k = 0; k < n && st2 == WA_OK; k++)
+         if ((ts[k] || !any) && fabs(ta[k] - c->a) < miss) miss = fabs(ta[k] - c->a), best = k;
+      if (st2 != WA_OK || best < 0 || s[0] != ta[best] || s[1] != tb[best] ||
+          s[2] != tp[best] || s[3] != tg[best])
+         violation(c, K_INCONSISTENT, "wa_lj_trace: status %d; state a* %.17g P* %.17g is not "
+                   "its point %d (a* %.17g P* %.17g)", st2, s[0], s[2], best,
+                   best >= 0 ? ta[best] : NAN, best >= 0 ? tp[best] : NAN);
+   }
    if (c->family == F_GAP_CRITICAL && st == WA_OK && !(c->null_mask & 1u) && unif(r) < 0.5) {
       /* against the path's events, load control's P_pf and the gap law: P_min is the most
          tensile load of the retraction, so at most every P* of it (up to rounding) */
@@ -2383,11 +2508,8 @@ static void run_one(long index) {
       automatic grid 75 times (at large alpha the traced adhered branch is long: alpha 34.8,
       mu 21.9 takes 98 s, a cost to bring down, not a hang), a sweep once per row (each row
       is a load path) */
-   shm->limit = ((c.family == F_LJ_CYCLE || c.family == F_LJ_TRACE) && c.n_grid == 0
-                    ? 75
-                 : c.family == F_MAP || c.family == F_MAP_CONTROL || c.family == F_LJ_CYCLE ||
-                         c.family == F_LJ_TRACE
-                    ? 10
+   shm->limit = (is_lj(c.family) && c.n_grid == 0                ? 75
+                 : c.family == F_MAP || c.family == F_MAP_CONTROL || is_lj(c.family) ? 10
                  : (c.family == F_CRITICAL_SWEEP || c.family == F_SWEEP_STATUS) && c.n_mu > 1
                     ? c.n_mu
                     : 1) * opt_timeout;

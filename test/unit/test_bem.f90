@@ -7,9 +7,13 @@ module test_bem
    use wavyadhesion
    use wa_bem_law, only: law_eval, law_potential, law_peak
    use wa_kinds, only: wp, pi
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    use wa_bem_elastic, only: bem_grid_type, new_grid, stiffness_matrix
    use wa_bem_solver, only: use_two_grid, jacobian_type, factor_at, jacobian_free
+   use wa_bem_elastic, only: kernel_value
+   use wa_bem_fast, only: fft_plans_type, plans_create, plans_destroy, circulant_symbol, &
+      circulant_apply
    use harness, only: error_type, unittest_type, new_unittest, check, check_close
    implicit none
    private
@@ -23,6 +27,7 @@ contains
       testsuite = [ &
          new_unittest("ldl_inertia_and_solve", test_ldl), &
          new_unittest("stiffness_symbol", test_stiffness), &
+         new_unittest("circulant_on_the_even_half", test_even_circulant), &
          new_unittest("law_closed_forms", test_law), &
          new_unittest("bad_input", test_bad_input), &
          new_unittest("trace_stability_and_folds", test_trace), &
@@ -32,6 +37,7 @@ contains
          new_unittest("jkr_trend", test_jkr), &
          new_unittest("rigid_limit", test_rigid), &
          new_unittest("profile_means", test_profile), &
+         new_unittest("state_at_a", test_state_at_a), &
          new_unittest("shifted_profile_whole_period", test_shifted), &
          new_unittest("two_grid_against_dense", test_two_grid), &
          new_unittest("fc_peak_gradual_alpha03_mu1", test_fc_peak_gradual), &
@@ -107,6 +113,36 @@ contains
       call check(error, abs(grid%fbar - 1.0_wp) < 1.0e-14_wp, "mean of 1 - cos")
    end subroutine test_stiffness
 
+   !> The stiffness applied to an even field by the cosine transform of its half period
+   !> (N/2 even: by a halfcomplex transform of length N/2; N/2 odd: FFTW's REDFT00; with
+   !> and without plans) against the dense folded matrix W K of the kernel's values.
+   subroutine test_even_circulant(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: sizes(4) = [8, 18, 64, 96]
+      type(bem_grid_type) :: grid
+      type(fft_plans_type) :: plans
+      real(wp), allocatable :: kw(:, :), symbol(:), x(:), y(:), ref(:)
+      integer :: i, j, np, status, pass
+      do i = 1, size(sizes)
+         np = sizes(i)
+         call new_grid(np, grid, status)
+         allocate (kw(grid%n, grid%n), symbol(0:np - 1), y(grid%n))
+         call stiffness_matrix(grid, kw)
+         call circulant_symbol(kernel_value(np, [(j, j = 0, np - 1)]), symbol)
+         x = [(exp(-3.0_wp*grid%x(j)) + 0.1_wp*sin(7.0_wp*j), j = 1, grid%n)]
+         ref = matmul(kw, x)/grid%w
+         do pass = 1, 2
+            if (pass == 2) call plans_create(plans, np, even=.true.)
+            call circulant_apply(plans, symbol, x, y)
+            call check(error, maxval(abs(y - ref)) < 1.0e-13_wp*np*maxval(abs(x)), &
+               "even circulant against W K")
+            if (allocated(error)) return
+         end do
+         call plans_destroy(plans)
+         deallocate (kw, symbol, y)
+      end do
+   end subroutine test_even_circulant
+
    !> LJ 3-9: phi(eps) = -dgamma, sigma(eps) = 0, peak 16/(9 sqrt 3) dgamma/eps at
    !> 3^(1/6) eps, slope = central difference; eps/Delta = (4 alpha^4)^(1/3)/mu.
    subroutine test_law(error)
@@ -150,6 +186,16 @@ contains
       if (allocated(error)) return
       call lj_problem(params, problem, status, msg, n=32768)
       call check(error, status == wa_capacity_too_small, "memory cap")
+      if (allocated(error)) return
+      ! refused before the grid's arrays are allocated (2^30 points aborted under a memory
+      ! limit: "Error allocating 4294967304 bytes"), odd or even
+      call lj_problem(params, problem, status, msg, n=2**30)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "16384") > 0 .and. &
+         .not. allocated(problem%grid%x), "n = 2^30: "//trim(msg))
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n=huge(1))
+      call check(error, status == wa_capacity_too_small .and. .not. allocated(problem%grid%x), &
+         "n = huge: "//trim(msg))
       if (allocated(error)) return
       call new_params(0.3_wp, 30.0_wp, params, status)
       call lj_problem(params, problem, status, msg)
@@ -407,6 +453,63 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_profile
+
+   !> lj_state_at_a against the traced curve: the state is the load-stable point with a*
+   !> nearest the target (the rule recomputed here), its fields the lj_profile of that
+   !> point from x* = -1/2 with the traction's sign turned (compressive positive); a_star
+   !> outside [0, 1/2] or NaN is refused before any trace.
+   subroutine test_state_at_a(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      type(lj_state_type) :: st
+      real(wp), allocatable :: x(:), gap(:), traction(:)
+      real(wp) :: targets(4), bad(4), miss, nan
+      character(len=256) :: msg
+      integer :: status, i, k, t, best, j
+      targets = [0.0_wp, 0.13_wp, 0.3_wp, 0.5_wp]
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_problem(params, problem, status, n=64)
+      call lj_trace(problem, br, status)
+      allocate (x(64), gap(64), traction(64))
+      do t = 1, size(targets)
+         call lj_state_at_a(problem, targets(t), st, status)
+         call check(error, status == wa_ok .and. st%n_period == 64, "state status")
+         if (allocated(error)) return
+         best = 0
+         miss = huge(1.0_wp)
+         do k = 1, br%n
+            if (br%stable_load(k) .and. abs(br%a_star(k) - targets(t)) < miss) then
+               miss = abs(br%a_star(k) - targets(t))
+               best = k
+            end if
+         end do
+         call check(error, st%a_star == br%a_star(best) .and. st%p_star == br%p_star(best) &
+            .and. st%b_star == br%b_star(best) .and. st%gbar == br%gbar(best) .and. &
+            st%stable_load, "the nearest load-stable point")
+         if (allocated(error)) return
+         call lj_profile(problem, br%z(:, best), x, gap, traction)
+         do i = 1, 64
+            j = modulo(i - 1 + 32, 64) + 1
+            call check(error, st%gap(i) == gap(j) .and. st%traction(i) == -traction(j) .and. &
+               abs(st%x(i) - ((i - 1)/64.0_wp - 0.5_wp)) <= epsilon(1.0_wp), "fields")
+            if (allocated(error)) return
+         end do
+      end do
+      call check(error, st%a_star == 0.5_wp, "a* = 1/2 is full contact")
+      if (allocated(error)) return
+      nan = ieee_value(nan, ieee_quiet_nan)
+      bad = [nan, -tiny(1.0_wp), 0.5_wp + epsilon(1.0_wp), huge(1.0_wp)]
+      do t = 1, size(bad)
+         msg = ""
+         call lj_state_at_a(problem, bad(t), st, status, msg)
+         call check(error, status == wa_invalid_argument .and. index(msg, "a_star") == 1 .and. &
+            index(msg, "[0, 1/2]") > 0 .and. st%n_period == 0 .and. .not. allocated(st%x), &
+            "bad a_star: "//trim(msg))
+         if (allocated(error)) return
+      end do
+   end subroutine test_state_at_a
 
    !> The sinusoid sampled with a shift (not even about x = 0: solved on the whole period)
    !> gives the critical loads of the even half-period solution.
