@@ -192,12 +192,12 @@ def test_one_point_is_the_facade_cycle():
     values of one direct facade cycle, bit for bit, and its message on failure."""
     from wavyadhesion import _wa_f2py as _f
     r = wa.critical_forces("lj", 0.3, 1.0, n=64, errors="nan")
-    out = _f.fa_lj_cycle(64, 0.3, 1.0, 64, 0, np.zeros(1), 1)
+    out = _f.fa_lj_cycle(64, 0.3, 1.0, 64, 0, np.zeros(1), 1, 0)
     v, n_period, status = out[12], out[13], out[14]
     assert status == 0 and int(r.N) == n_period and int(r.status) == 0
     got = [r.P_fc, r.P_pf, r.P_snap, r.W_star, r.P_fc_err, r.P_pf_err, r.P_snap_err,
-           r.W_star_err]
-    assert np.array(got).tobytes() == v[[0, 1, 2, 3, 5, 6, 7, 8]].tobytes()
+           r.W_star_err, r.P_fc_peak, r.P_fc_peak_err]
+    assert np.array(got).tobytes() == v[[0, 1, 2, 3, 5, 6, 7, 8, 11, 12]].tobytes()
     bad = wa.critical_forces("lj", 0.3, 0.0, n=64, errors="nan")
     assert int(bad.status) == 1 and "mu must be > 0" in bad.messages[()]
     assert math.isnan(float(bad.P_fc)) and int(bad.N) == 0

@@ -42,8 +42,9 @@ LJ_PATH_EVENTS = {3: "jump_start", 4: "jump_end", 5: "full_contact_reached",
 _TRACE_CAPACITY = 2048
 # A path holds at most 64 events (wa_bem_path)
 _PATH_CAPACITY = 64
-# The grid's cap: at most 16384 points per period (lj_problem)
-_GRID_CAP = 16384
+# The grid's cap: at most 16384 points per period (lj_problem; model_error_map's n_max)
+LJ_MAX_N = 16384
+_GRID_CAP = LJ_MAX_N
 
 
 def is_lj(model) -> bool:

@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 from ._args import count_in, float_array, model_code, model_name, C_INT_MAX
 from ._energy import energy_lost
 from ._errors import CAPACITY_TOO_SMALL, INVALID_ARGUMENT, OK, InvalidArgumentError
-from ._lj import _GRID_CAP as LJ_MAX_N, lj_critical_forces
+from ._lj import LJ_MAX_N, lj_critical_forces
 from ._loadpath import MECHANISMS, critical_forces
 from ._parallel import make_progress
 
