@@ -129,3 +129,19 @@ def test_fc_mechanism_and_executor_order():
     for key, arr in serial.rel_error.items():
         np.testing.assert_array_equal(par.rel_error[key], arr)
     np.testing.assert_array_equal(par.lj_N, serial.lj_N)
+
+
+def test_only_the_grid_refusal_is_unresolved():
+    """A cell is "unresolved" only where LJ refused the grid (beyond the cap); the same
+    status from a trace that ran out of points (alpha 0.01, mu 2.5 at N = 4096: 20000
+    points before full contact) is a failure (never drawn as beyond the cap)."""
+    from wavyadhesion._errors import CAPACITY_TOO_SMALL, NOT_CONVERGED
+    from wavyadhesion._model_error import _cell_status
+    refusal = ("lj: the interaction zone (2.370E-06 of a period) needs N = 8388608 points "
+               "per period, above the automatic grid's cap of 4096; pass n explicitly")
+    assert _cell_status(CAPACITY_TOO_SMALL, refusal) == "unresolved"
+    assert _cell_status(CAPACITY_TOO_SMALL, "lj: n gives more than 8193 unknowns") == "unresolved"
+    trace = "lj_trace: more than max_points points before full contact"
+    assert _cell_status(CAPACITY_TOO_SMALL, trace) == "failed"
+    assert _cell_status(NOT_CONVERGED, refusal) == "failed"
+    assert _cell_status(0, "") == "ok"

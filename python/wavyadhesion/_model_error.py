@@ -10,7 +10,8 @@ at which b* (the peak tension's abscissa) first reaches 1/2: DW's and MD's b* =
 a* + 0.4 (c* - a*) is 1/2 only in full contact (doc/theory.md, "Smooth adhesion"). A cell
 whose LJ grid would exceed the cap ``n_max`` (the automatic grid puts 12 points on the
 interaction zone; status "output capacity too small", the message naming the N needed)
-is *unresolved*: its values are NaN, never extrapolated.
+is *unresolved*: its values are NaN, never extrapolated; one whose LJ cycle fails otherwise
+(e.g. a trace beyond its 20000 points) is *failed*, with its message.
 """
 
 from __future__ import annotations
@@ -48,9 +49,20 @@ _RESOLVED_RELATIVE = 1e-3
 # issue's range is pi 0.01^2/2 ~ 1.6e-4) count as zero: W* = 0 where a cycle has no jump
 # comes out as rounding (~1e-17).
 _ZERO = 1e-12
-# LJ statuses that mean "the grid cap": the automatic grid refuses the zone (invalid
-# argument, naming --n) or the requested grid is beyond the capacity.
+# LJ statuses that may mean "the grid cap": the automatic grid refuses the zone, or an
+# explicit grid is beyond the solver's; ...
 _UNRESOLVED = (INVALID_ARGUMENT, CAPACITY_TOO_SMALL)
+# ... when the message is lj_problem's refusal of the grid (a trace beyond its 20000
+# points has the same status, but is a failure: at alpha 0.01, mu 2.5, N = 4096)
+_GRID_REFUSALS = ("above the automatic grid's cap", "n gives more than")
+
+
+def _cell_status(stat: int, text: str) -> str:
+    """"ok", "unresolved" (the grid refused: beyond the cap) or "failed" (anything else)."""
+    if stat == OK:
+        return "ok"
+    refused = stat in _UNRESOLVED and any(r in text for r in _GRID_REFUSALS)
+    return "unresolved" if refused else "failed"
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -277,7 +289,7 @@ def model_error_map(alpha: ArrayLike, mu: ArrayLike, *, models: Sequence[str] = 
             if stat == OK:
                 lj_v[k], lj_e[k], lj_N[k] = v, e, n_used
             else:
-                lj_status[k] = "unresolved" if stat in _UNRESOLVED else "failed"
+                lj_status[k] = _cell_status(stat, text)
                 messages["lj", int(i), int(j)] = text
             if report is not None:
                 report.update(1)

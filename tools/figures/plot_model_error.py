@@ -18,6 +18,7 @@ contact). The table: one row per cell (the columns are listed in TABLE_COLUMNS' 
 Values from `wavyadhesion.model_error_map` (`--workers K` runs it on a dask LocalCluster's
 executor when dask.distributed is installed, else on a thread pool), with a progress bar.
 Prints the grid, the wall time, the cells per status and the CPU time per LJ grid.
+`--from-table CSV` draws the figure again from a saved table, computing nothing.
 Uses the installed Python package (`pip install ./python`); matplotlib is imported here only.
 """
 import argparse
@@ -85,6 +86,31 @@ def table_rows(m):
             rows.append([repr(float(v)) if isinstance(v, (float, np.floating)) else v
                          for v in row])
     return rows
+
+
+def from_table(path):
+    """A ModelErrorMap rebuilt from a saved table (table_rows' columns): draws the figure
+    again without recomputing the map."""
+    with open(path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    alpha = np.array(sorted({float(r["alpha"]) for r in rows}))
+    mu = np.array(sorted({float(r["mu"]) for r in rows}))
+    models = tuple(mo for mo in ("dw", "md") if f"{mo}_status" in rows[0])
+    cell = {(float(r["alpha"]), float(r["mu"])): r for r in rows}
+
+    def grid(col, kind=float):
+        return np.array([[kind(cell[a, u][col]) for u in mu] for a in alpha])
+
+    lj = {"P_fc": grid("lj_P_fc_peak"), "P_pf": grid("lj_P_pf"), "W_star": grid("lj_W_star"),
+          "P_fc_contact": grid("lj_P_fc"), "P_snap": grid("lj_P_snap")}
+    lj_err = {"P_fc": grid("lj_P_fc_peak_err"), "P_pf": grid("lj_P_pf_err"),
+              "W_star": grid("lj_W_star_err")}
+    key = lambda col: {(mo, q): grid(f"{mo}_{col}{q}") for mo in models for q in wa.QUANTITIES}
+    resolved = {k: v.astype(bool) for k, v in key("resolved_").items()}
+    return wa.ModelErrorMap(alpha, mu, models, lj, lj_err, grid("lj_N", int),
+                            grid("lj_status", str), grid("lj_seconds"), key(""), key("rel_"),
+                            resolved, {mo: grid(f"{mo}_status", str) for mo in models},
+                            {mo: grid(f"{mo}_fc_mechanism", str) for mo in models})
 
 
 def edges(x):
@@ -158,7 +184,17 @@ def main():
                     help="parallel workers (dask LocalCluster if installed; default 1)")
     ap.add_argument("--n-max", type=int, default=16384,
                     help="cap of LJ's automatic grid, 128..16384 (default 16384)")
+    ap.add_argument("--from-table", metavar="CSV",
+                    help="draw the figure from a saved table (no computation; --alpha, --mu, "
+                         "--workers ignored; --n-max only labels the figure)")
     args = ap.parse_args()
+    if args.from_table:
+        m = from_table(args.from_table)
+        path = Path(args.outdir) / "model_error_map.png"
+        draw(m, path, args.n_max)
+        print(repr(m))
+        print(f"wrote {path}")
+        return
     alpha, mu = log_axis(args.alpha), log_axis(args.mu)
     t0 = time.perf_counter()
     m = compute(alpha, mu, args.workers, args.n_max)
@@ -167,7 +203,7 @@ def main():
     draw(m, path, args.n_max)
     table = Path(args.outdir) / "model_error_map.csv"
     with open(table, "w", newline="") as fh:
-        csv.writer(fh).writerows(table_rows(m))
+        csv.writer(fh, lineterminator="\n").writerows(table_rows(m))
     print(f"grid: alpha {args.alpha} x mu {args.mu} ({alpha.size * mu.size} cells), "
           f"n_max {args.n_max}, {args.workers} workers: {seconds:.1f} s wall")
     print(repr(m))
