@@ -253,8 +253,8 @@ contains
    end function help_gaplaw
 
    pure function help_critical() result(text)
-      character(len=100) :: text(27)
-      character(len=100), parameter :: lines(27) = [character(len=100) :: &
+      character(len=100) :: text(28)
+      character(len=100), parameter :: lines(28) = [character(len=100) :: &
          "Usage: wavyadhesion critical [--alpha A[,A...]] [--mu U[,U...] | --mu-range", &
          "       LO:HI:N[:log]] [--control load|gap] [--model M]", &
          "", &
@@ -279,8 +279,9 @@ contains
          "Examples:", &
          "  wavyadhesion critical --model dw --alpha 0.3,0.6,1 --mu-range 0.01:10:200:log", &
          "  wavyadhesion critical --control gap --model md --alpha 0.3 --mu 1,5", &
-         "--model lj: columns alpha mu P_fc P_pf P_fc_err P_pf_err (--control gap: alpha", &
-         "  mu W_star W_fraction W_star_err); _err = |value at N - value at N/2|.", &
+         "--model lj: columns alpha mu P_fc P_pf P_fc_err P_pf_err P_fc_peak P_fc_peak_err", &
+         "  (--control gap: alpha mu W_star W_fraction W_star_err); _err = |value at N -", &
+         "  value at N/2|; P_fc_peak: load at which b* first reaches 1/2 (DW's, MD's P_fc).", &
          "  wavyadhesion critical --model lj --alpha 0.3 --mu 3"]
       text = lines
    end function help_critical

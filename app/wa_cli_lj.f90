@@ -335,7 +335,9 @@ contains
       else
          notes = [character(len=160) :: notes, &
             "P_fc: load at which full contact is first reached (loading from P* = 0)", &
-            "P_pf: pull-off load on unloading from full contact"]
+            "P_pf: pull-off load on unloading from full contact", &
+            "P_fc_peak: load at which b* (the peak tension's abscissa) first reaches 1/2: the", &
+            "  full-contact load comparable with DW's and MD's P_fc (doc/theory.md)"]
       end if
       if (n_failed > 0) notes = [character(len=160) :: notes, int_text(n_failed)//" of "// &
          int_text(size(row_stat))//" rows failed: their values are NaN (reasons on standard error)"]
@@ -344,7 +346,7 @@ contains
             "alpha mu W_star W_fraction W_star_err", notes=notes)
       else
          call write_header(tab, "critical forces (full contact, pull-off)", "lj", &
-            "alpha mu P_fc P_pf P_fc_err P_pf_err", notes=notes)
+            "alpha mu P_fc P_pf P_fc_err P_pf_err P_fc_peak P_fc_peak_err", notes=notes)
       end if
       do j = 1, size(alpha)
          do i = 1, size(mu)
@@ -352,11 +354,12 @@ contains
                if (row_stat(i, j) /= wa_ok .and. gap) then
                   call write_row(tab, [alpha(j), mu(i), nan, nan, nan])
                else if (row_stat(i, j) /= wa_ok) then
-                  call write_row(tab, [alpha(j), mu(i), nan, nan, nan, nan])
+                  call write_row(tab, [alpha(j), mu(i), nan, nan, nan, nan, nan, nan])
                else if (gap) then
                   call write_row(tab, [alpha(j), mu(i), c%w_star, c%w_fraction, c%w_star_err])
                else
-                  call write_row(tab, [alpha(j), mu(i), c%p_fc, c%p_pf, c%p_fc_err, c%p_pf_err])
+                  call write_row(tab, [alpha(j), mu(i), c%p_fc, c%p_pf, c%p_fc_err, c%p_pf_err, &
+                     c%p_fc_peak, c%p_fc_peak_err])
                end if
             end associate
          end do

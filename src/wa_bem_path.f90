@@ -6,7 +6,10 @@
 !> Rules (as for DW and MD): loading starts separated at P* = 0 and lands on the first
 !> load-stable state at P* = 0 along the curve; it rises along load-stable pieces and at a
 !> maximum of P* jumps at constant load to the next load-stable state further along the
-!> curve; P_fc* is the load at which full contact (a* = 1/2) is first reached. Unloading
+!> curve; P_fc* is the load at which full contact (a* = 1/2) is first reached, P_fc,peak*
+!> the load at which the peak tension's abscissa b* first reaches 1/2 (under the same
+!> rules: a jump's load where a jump reaches it), the one comparable with DW's and MD's
+!> P_fc* (their b* = a* + 0.4 (c* - a*) is 1/2 only in full contact). Unloading
 !> starts at the end of the trace, falls, and at a minimum of P* jumps back along the
 !> curve, or separates where no load-stable state at that load is left: P_pf*. Under gap
 !> control the approach runs from far apart to the end of the trace and the retraction
@@ -16,7 +19,7 @@ module wa_bem_path
    use wa_kinds, only: wp
    use wa_status, only: wa_ok, wa_no_solution, wa_not_converged, set_error
    use wa_params, only: params_type
-   use wa_bem_law, only: bem_law_type, lj_law, law_eval
+   use wa_bem_law, only: bem_law_type, lj_law, law_eval, law_peak
    use wa_bem_elastic, only: full_period
    use wa_bem_solver, only: lj_problem_type, jacobian_type, point_info_type, factor_at, &
       point_info, lj_problem, gap_energy, jacobian_free
@@ -39,8 +42,8 @@ module wa_bem_path
    integer, parameter :: max_events = 64
    !> Bound on the jumps of one stage of a path (each jump records two events)
    integer, parameter :: max_path_jumps = 30
-   !> quantity walked: the load or the mean gap
-   integer, parameter :: by_load = 1, by_gap = 2
+   !> quantity walked: the load or the mean gap; or solved for: the largest gap
+   integer, parameter :: by_load = 1, by_gap = 2, by_h_max = 3
 
    !> The events of one cycle under one control, in order.
    type :: lj_path_type
@@ -61,13 +64,18 @@ module wa_bem_path
       !> Load of the last jump on loading (the snap towards full contact; P_fc* where
       !> loading has no jump): the JKR limit's P_fc*
       real(wp) :: p_snap = 0.0_wp
+      !> Load at which b* (the abscissa of the peak tension, h = 3^(1/6) eps) first
+      !> reaches 1/2 on loading, i.e. the largest gap falls to 3^(1/6) eps: the full-
+      !> contact load comparable with the cohesive-zone models'; true where by a jump
+      real(wp) :: p_fc_peak = 0.0_wp
+      logical :: fc_peak_by_jump = .false.
       !> Energy lost per gap-controlled cycle (units p* Delta) and over pi alpha^2/2
       real(wp) :: w_star = 0.0_wp, w_fraction = 0.0_wp
       !> Grid points per period, and the estimated discretisation errors (|value at N -
       !> value at N/2|; 0 where the coarse cycle was not computed)
       integer :: n_period = 0
       real(wp) :: p_fc_err = 0.0_wp, p_pf_err = 0.0_wp, w_star_err = 0.0_wp, &
-         p_snap_err = 0.0_wp
+         p_snap_err = 0.0_wp, p_fc_peak_err = 0.0_wp
    end type lj_cycle_type
 
 contains
@@ -115,10 +123,10 @@ contains
    !> Trace, both paths and the critical values at the grid of n (0 or absent: automatic)
    !> and at half that grid, whose difference is the error estimate (skipped with
    !> estimate = .false.).
-   recursive subroutine lj_cycle(params, cycle, status, errmsg, n, profile, estimate)
+   recursive subroutine lj_cycle(params, cycle, status, errmsg, n, profile, estimate, n_max)
       !> Dimensionless parameters alpha, mu (new_params; checked again), mu > 0
       type(params_type), intent(in) :: params
-      !> Both paths, P_fc*, P_pf*, the snap load (over p*), W* (over p* Delta), W*/(pi
+      !> Both paths, P_fc*, P_fc,peak*, P_pf*, the snap load (over p*), W* (over p* Delta), W*/(pi
       !> alpha^2/2), N and the error estimates; on failure what was found before it (a
       !> failing coarse cycle leaves the cycle at N with the errors 0)
       type(lj_cycle_type), intent(out) :: cycle
@@ -136,6 +144,8 @@ contains
       real(wp), intent(in), optional :: profile(:)
       !> If false, skip the cycle at N/2 (the error fields stay 0); default true
       logical, intent(in), optional :: estimate
+      !> Cap of the automatic grid, as in lj_problem (0 or absent: 2048)
+      integer, intent(in), optional :: n_max
       type(lj_problem_type) :: problem
       type(lj_branch_type) :: branch
       type(lj_cycle_type) :: coarse
@@ -143,7 +153,7 @@ contains
 
       with_estimate = .true.
       if (present(estimate)) with_estimate = estimate
-      call lj_problem(params, problem, status, errmsg, n, profile)
+      call lj_problem(params, problem, status, errmsg, n, profile, n_max)
       if (status /= wa_ok) return
       call lj_trace(problem, branch, status, errmsg)
       if (status /= wa_ok) return
@@ -157,6 +167,7 @@ contains
       cycle%p_pf_err = abs(cycle%p_pf - coarse%p_pf)
       cycle%w_star_err = abs(cycle%w_star - coarse%w_star)
       cycle%p_snap_err = abs(cycle%p_snap - coarse%p_snap)
+      cycle%p_fc_peak_err = abs(cycle%p_fc_peak - coarse%p_fc_peak)
    end subroutine lj_cycle
 
    !> Load- and gap-controlled paths on a traced branch (landing states are inserted).
@@ -166,7 +177,7 @@ contains
       !> A branch traced by lj_trace (status wa_ok); the landing states of the jumps are
       !> inserted into it (also those found before a failure)
       type(lj_branch_type), intent(inout) :: branch
-      !> A default-initialised cycle; receives N, the load path with P_fc*, P_pf*, the snap
+      !> A default-initialised cycle; receives N, the load path with P_fc*, P_fc,peak*, P_pf*, the snap
       !> load (over p*), and the gap path with W* (over p* Delta); W*/(pi alpha^2/2) and
       !> the error fields are left alone (lj_cycle sets them). On failure the path of the
       !> failing control is not stored (P_fc* may hold huge(1.0_wp) where loading fails)
@@ -193,16 +204,16 @@ contains
          errmsg, status)
    end subroutine lj_paths
 
-   !> Quantity q (by_load: P*, by_gap: gbar*) of point i.
+   !> Quantity q (by_load: P*, by_gap: gbar*, by_h_max: the largest gap) of point i.
    pure function q_of(branch, by, i) result(q)
       type(lj_branch_type), intent(in) :: branch
       integer, intent(in) :: by, i
       real(wp) :: q
-      if (by == by_load) then
-         q = branch%p_star(i)
-      else
-         q = branch%gbar(i)
-      end if
+      select case (by)
+      case (by_load); q = branch%p_star(i)
+      case (by_gap); q = branch%gbar(i)
+      case default; q = branch%h_max(i)
+      end select
    end function q_of
 
    !> Stable under the control of interval [i, i+1] (its inertia is constant: folds are
@@ -316,39 +327,18 @@ contains
       integer, intent(in) :: by, i
       real(wp), intent(in) :: value
       integer, intent(out) :: land, status
-      type(brent_type) :: solver
       type(point_info_type) :: info
       real(wp), allocatable :: z(:), t(:)
-      real(wp) :: q0, q1, s, ds, q
-      integer :: it, n_factor, k
-      logical :: done
-      q0 = q_of(branch, by, i) - value
-      q1 = q_of(branch, by, i + 1) - value
-      status = wa_ok
-      if (q0 == 0.0_wp) then
-         land = i; return
-      else if (q1 == 0.0_wp) then
-         land = i + 1; return
+      real(wp) :: s
+      integer :: n_factor, k
+      if (q_of(branch, by, i) == value) then
+         land = i; status = wa_ok; return
+      else if (q_of(branch, by, i + 1) == value) then
+         land = i + 1; status = wa_ok; return
       end if
       n_factor = 1
-      call factor_at(problem, branch%z(:, i), pre)
-      ds = branch%s(i + 1) - branch%s(i)
-      call brent_init(solver, 0.0_wp, q0, ds, q1, 1.0e-12_wp*ds)
-      do it = 1, 80
-         call brent_propose(solver, s, done, settle=.true.)
-         if (done) exit
-         call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, s, z, t, n_factor, &
-            status)
-         if (status /= wa_ok) return
-         info = point_info(problem, z)
-         q = info%p
-         if (by == by_gap) q = info%gbar
-         call brent_accept(solver, q - value)
-      end do
-      call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, solver%b, z, t, &
-         n_factor, status)
+      call solve_crossing(problem, pre, branch, by, i, value, z, t, info, s, n_factor, status)
       if (status /= wa_ok) return
-      info = point_info(problem, z)
       call factor_at(problem, z, pre)
       n_factor = n_factor + 1
       if (problem%two_grid) then         ! the inertia of the interval (no fold inside)
@@ -357,12 +347,54 @@ contains
          pre%neg_load = branch%neg_load(k)
          pre%neg_gap = branch%neg_gap(k)
       end if
-      call branch_append(problem, branch, z, t, info, branch%s(i) + solver%b, pre%neg_load, &
+      call branch_append(problem, branch, z, t, info, branch%s(i) + s, pre%neg_load, &
          pre%neg_gap, 0, 0)
       call move_last(branch, i + 1)
       land = i + 1
       branch%n_factor = branch%n_factor + n_factor
    end subroutine crossing_with
+
+   !> The state z (tangent t, info) of interval [i, i+1] where q = value, at arclength s
+   !> from point i (Brent on the arclength; the ends must bracket it, neither equal).
+   subroutine solve_crossing(problem, pre, branch, by, i, value, z, t, info, s, n_factor, &
+         status)
+      type(lj_problem_type), intent(in) :: problem
+      type(jacobian_type), intent(inout) :: pre
+      type(lj_branch_type), intent(in) :: branch
+      integer, intent(in) :: by, i
+      real(wp), intent(in) :: value
+      real(wp), allocatable, intent(out) :: z(:), t(:)
+      type(point_info_type), intent(out) :: info
+      real(wp), intent(out) :: s
+      integer, intent(inout) :: n_factor
+      integer, intent(out) :: status
+      type(brent_type) :: solver
+      real(wp) :: ds, q
+      integer :: it
+      logical :: done
+      call factor_at(problem, branch%z(:, i), pre)
+      ds = branch%s(i + 1) - branch%s(i)
+      call brent_init(solver, 0.0_wp, q_of(branch, by, i) - value, ds, &
+         q_of(branch, by, i + 1) - value, 1.0e-12_wp*ds)
+      do it = 1, 80
+         call brent_propose(solver, s, done, settle=.true.)
+         if (done) exit
+         call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, s, z, t, n_factor, &
+            status)
+         if (status /= wa_ok) return
+         info = point_info(problem, z)
+         select case (by)
+         case (by_load); q = info%p
+         case (by_gap); q = info%gbar
+         case default; q = info%h_max
+         end select
+         call brent_accept(solver, q - value)
+      end do
+      s = solver%b
+      call lj_point_at(problem, branch%z(:, i), branch%t(:, i), pre, s, z, t, n_factor, status)
+      if (status /= wa_ok) return
+      info = point_info(problem, z)
+   end subroutine solve_crossing
 
    !> Move the last point of the branch to position k (the others shift up).
    subroutine move_last(branch, k)
@@ -397,9 +429,9 @@ contains
       type(lj_cycle_type), intent(inout) :: cycle
       integer, intent(out) :: status
       character(len=*), intent(inout), optional :: errmsg
-      integer :: i, land, dir, jumps
+      integer :: i, land, dir, jumps, start
       real(wp) :: pj
-      logical :: landed
+      logical :: landed, peak_found
       type(lj_path_type) :: path
 
       ! loading: land at P* = 0 on the first load-stable state along the curve
@@ -412,6 +444,7 @@ contains
       i = land
       call record(path, lj_stage_loading, lj_path_jump_end, branch, i)
       cycle%p_fc = huge(1.0_wp)
+      peak_found = landed_at_peak(problem, branch, i, branch%p_star(i), cycle)
       do jumps = 1, 30
          if (branch%a_star(i) >= 0.5_wp) then        ! landed in full contact
             cycle%p_fc = branch%p_star(i)
@@ -420,7 +453,16 @@ contains
             exit
          end if
          dir = rising(branch, by_load, i, 1)
+         start = i
          call walk(branch, by_load, i, dir, path, lj_stage_loading)
+         if (.not. peak_found) then
+            call peak_on_walk(problem, branch, start, i, dir, cycle, peak_found, status)
+            if (status /= wa_ok) then
+               call fail(status, "lj load path: the state where b* reaches 1/2 did not "// &
+                  "converge", errmsg, status)
+               return
+            end if
+         end if
          if (reached_full_contact(path, lj_stage_loading)) then
             cycle%p_fc = path%p_star(path%n)
             cycle%fc_by_jump = .false.
@@ -439,6 +481,7 @@ contains
                errmsg, status)
             return
          end if
+         if (.not. peak_found) peak_found = landed_at_peak(problem, branch, i, pj, cycle)
          if (branch%a_star(i) >= 0.5_wp) then
             cycle%p_fc = pj
             cycle%fc_by_jump = .true.
@@ -477,6 +520,55 @@ contains
       end do
       call fail(wa_not_converged, "lj load path: too many jumps on unloading", errmsg, status)
    end subroutine load_control
+
+   !> True where the state landed on at point i (by a jump at load pj) has b* = 1/2 (its
+   !> largest gap at most the peak tension's): P_fc,peak* = pj, by that jump.
+   logical function landed_at_peak(problem, branch, i, pj, cycle) result(found)
+      type(lj_problem_type), intent(in) :: problem
+      type(lj_branch_type), intent(in) :: branch
+      integer, intent(in) :: i
+      real(wp), intent(in) :: pj
+      type(lj_cycle_type), intent(inout) :: cycle
+      found = branch%h_max(i) <= law_peak(problem%law)
+      if (.not. found) return
+      cycle%p_fc_peak = pj
+      cycle%fc_peak_by_jump = .true.
+   end function landed_at_peak
+
+   !> P_fc,peak* on a loading walk from point i0 to i1 (direction dir): the load where
+   !> the largest gap first falls to the peak tension's gap 3^(1/6) eps, solved on the
+   !> curve inside the interval that brackets it (not inserted: the other paths keep
+   !> their points). found false where the walk does not reach it.
+   subroutine peak_on_walk(problem, branch, i0, i1, dir, cycle, found, status)
+      type(lj_problem_type), intent(in) :: problem
+      type(lj_branch_type), intent(in) :: branch
+      integer, intent(in) :: i0, i1, dir
+      type(lj_cycle_type), intent(inout) :: cycle
+      logical, intent(out) :: found
+      integer, intent(out) :: status
+      type(jacobian_type) :: pre
+      type(point_info_type) :: info
+      real(wp), allocatable :: z(:), t(:)
+      real(wp) :: peak, s
+      integer :: k, n_factor
+      peak = law_peak(problem%law)
+      found = .false.
+      status = wa_ok
+      do k = i0, i1 - dir, dir
+         if (branch%h_max(k + dir) <= peak) then
+            found = .true.
+            cycle%p_fc_peak = branch%p_star(k + dir)
+            cycle%fc_peak_by_jump = .false.
+            if (branch%h_max(k + dir) == peak .or. branch%h_max(k) <= peak) return
+            n_factor = 0
+            call solve_crossing(problem, pre, branch, by_h_max, min(k, k + dir), peak, z, &
+               t, info, s, n_factor, status)
+            call jacobian_free(pre)
+            if (status == wa_ok) cycle%p_fc_peak = info%p
+            return
+         end if
+      end do
+   end subroutine peak_on_walk
 
    !> Approach and retraction under gap control, and W*.
    subroutine gap_control(problem, branch, cycle, status, errmsg)

@@ -110,34 +110,47 @@ contains
    end function lj_zone_length
 
    !> The automatic grid: the smallest power of two >= 128 that puts points_per_zone
-   !> points on the interaction zone; 0 where that exceeds lj_max_auto_n.
-   pure function lj_auto_n(params) result(n)
+   !> points on the interaction zone; 0 where that exceeds the cap n_max.
+   pure function lj_auto_n(params, n_max) result(n)
       !> Validated dimensionless parameters alpha, mu (new_params), mu > 0 (lj_problem
       !> refuses mu = 0)
       type(params_type), intent(in) :: params
-      integer :: n
+      !> The cap (absent: lj_max_auto_n = 2048)
+      integer, intent(in), optional :: n_max
+      integer :: n, cap
       real(wp) :: need
-      need = points_per_zone/lj_zone_length(params)
-      n = 128
-      do while (n < need .and. n <= lj_max_auto_n)
-         n = 2*n
-      end do
-      if (n > lj_max_auto_n) n = 0
+      cap = lj_max_auto_n
+      if (present(n_max)) cap = n_max
+      need = needed_n(params)
+      n = 0
+      if (need <= cap) n = nint(need)
    end function lj_auto_n
+
+   !> The N the automatic rule needs, uncapped (a real: it may exceed any integer).
+   pure function needed_n(params) result(n)
+      type(params_type), intent(in) :: params
+      real(wp) :: n, need
+      need = points_per_zone/lj_zone_length(params)
+      n = 128.0_wp
+      do while (n < need .and. n < 1.0e300_wp)
+         n = 2.0_wp*n
+      end do
+   end function needed_n
 
    !> The discretised problem of (alpha, mu) with the LJ law: n points per period (0 or
    !> absent: automatic), the profile as samples of one period over Delta (absent: the
    !> sinusoid 1 - cos 2 pi x). wa_invalid_argument for bad parameters (mu = 0 has no
    !> LJ law), wa_capacity_too_small where the grid exceeds the caps.
-   subroutine lj_problem(params, problem, status, errmsg, n, profile)
+   subroutine lj_problem(params, problem, status, errmsg, n, profile, n_max)
       !> Dimensionless parameters alpha, mu (new_params; checked again here), mu > 0
       type(params_type), intent(in) :: params
       !> The discretised problem (law, grid of N points per period, stiffness), for lj_trace;
       !> incomplete on failure (not to be used)
       type(lj_problem_type), intent(out) :: problem
-      !> wa_ok; wa_invalid_argument for bad params, mu = 0, a bad n or a profile of fewer
-      !> than 4 samples; wa_capacity_too_small where the automatic grid would exceed
-      !> lj_max_auto_n = 2048 or the grid gives more than lj_max_unknowns = 8193 unknowns
+      !> wa_ok; wa_invalid_argument for bad params, mu = 0, a bad n or n_max or a profile of
+      !> fewer than 4 samples; wa_capacity_too_small where the automatic grid would exceed
+      !> its cap (n_max, default lj_max_auto_n = 2048; the message names the N needed) or
+      !> the grid gives more than lj_max_unknowns = 8193 unknowns
       integer, intent(out) :: status
       !> Receives the reason on failure (the bad argument and its valid range, or the cap)
       character(len=*), intent(inout), optional :: errmsg
@@ -149,8 +162,11 @@ contains
       !> 2048: it is solved densely on the whole period); an even profile
       !> (y(j) = y(M-j)) is solved on the half period; absent: the sinusoid 1 - cos 2 pi x*
       real(wp), intent(in), optional :: profile(:)
-      integer :: np
-      character(len=24) :: text
+      !> Cap of the automatic grid, in [128, 16384]; 0 or absent: lj_max_auto_n = 2048
+      !> (ignored with an explicit n)
+      integer, intent(in), optional :: n_max
+      integer :: np, cap
+      character(len=24) :: text, needed, cap_text
       call check_params(params, status, errmsg)
       if (status /= wa_ok) return
       if (params%mu <= 0.0_wp) then
@@ -158,15 +174,31 @@ contains
             "would be infinite): mu must be > 0", status, errmsg)
          return
       end if
+      cap = lj_max_auto_n
+      if (present(n_max)) then
+         if (n_max /= 0 .and. (n_max < 128 .or. n_max > 2*(lj_max_unknowns - 1))) then
+            call set_error(wa_invalid_argument, "n_max must be 0 (the default cap, 2048) "// &
+               "or in [128, 16384]", status, errmsg)
+            return
+         end if
+         if (n_max /= 0) cap = n_max
+      end if
       np = 0
       if (present(n)) np = n
       if (np == 0) then
-         np = lj_auto_n(params)
+         np = lj_auto_n(params, cap)
          if (np == 0) then
             write (text, '(es10.3)') lj_zone_length(params)
+            if (needed_n(params) < 2.0_wp**30) then
+               write (needed, '(i0)') nint(needed_n(params))
+            else
+               write (needed, '(es10.3)') needed_n(params)
+            end if
+            write (cap_text, '(i0)') cap
             call set_error(wa_capacity_too_small, "lj: the interaction zone ("// &
-               trim(adjustl(text))//" of a period) needs more than the automatic grid's "// &
-               "cap of 2048 points per period; pass n explicitly (at most 16384)", status, errmsg)
+               trim(adjustl(text))//" of a period) needs N = "//trim(adjustl(needed))// &
+               " points per period, above the automatic grid's cap of "//trim(cap_text)// &
+               "; pass n explicitly (at most 16384)", status, errmsg)
             return
          end if
       end if

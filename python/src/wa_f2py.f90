@@ -1091,8 +1091,8 @@ end subroutine fa_lj_trace
 !> (loading, unloading) and of the gap-controlled path (approach, retraction), P_fc*,
 !> P_pf*, the snap load, W* and their error estimates |value at N - value at N/2|
 !> (estimate = 0: not computed, 0). On failure the counts are 0 and the values NaN.
-subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate, l_stage, l_event, &
-      l_a, l_p, l_g, n_load, g_stage, g_event, g_a, g_p, g_g, n_gap, values, n_period, &
+subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate, n_max, l_stage, &
+      l_event, l_a, l_p, l_g, n_load, g_stage, g_event, g_a, g_p, g_g, n_gap, values, n_period, &
       status, message)
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -1116,6 +1116,8 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    real(c_double), intent(in) :: profile(m)
    !> 1: estimate the discretisation errors (the cycle again at N/2); 0: not
    integer(c_int), intent(in) :: estimate
+   !> Cap of the automatic grid (0: the library's, 2048; else in [128, 16384])
+   integer(c_int), intent(in) :: n_max
    !> Load path: stage (1 loading, 2 unloading), event, a*, P*, gbar* of each event
    integer(c_int), intent(out) :: l_stage(capacity), l_event(capacity)
    real(c_double), intent(out) :: l_a(capacity), l_p(capacity), l_g(capacity)
@@ -1127,8 +1129,8 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    !> Number of gap-path events (may exceed capacity)
    integer(c_int), intent(out) :: n_gap
    !> P_fc, P_pf, P_snap, W_star, W_fraction, P_fc_err, P_pf_err, P_snap_err, W_star_err,
-   !> fc_by_jump, pf_by_jump (1 or 0)
-   real(c_double), intent(out) :: values(11)
+   !> fc_by_jump, pf_by_jump (1 or 0), P_fc_peak, P_fc_peak_err, fc_peak_by_jump (1 or 0)
+   real(c_double), intent(out) :: values(14)
    !> Grid points per period used
    integer(c_int), intent(out) :: n_period
    !> wa_ok or the failure's status
@@ -1147,7 +1149,8 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
    values = ieee_value(1.0_c_double, ieee_quiet_nan)
    if (use_profile /= 0) prof = profile     ! else unallocated: absent, the sinusoid
    call new_params(alpha, mu, params, stat, message)
-   if (stat == wa_ok) call lj_cycle(params, c, stat, message, int(n), prof, estimate /= 0)
+   if (stat == wa_ok) call lj_cycle(params, c, stat, message, int(n), prof, estimate /= 0, &
+      int(n_max))
    if (stat == wa_ok) then
       k = min(c%load%n, int(capacity))
       l_stage(1:k) = int(c%load%stage(1:k), c_int); l_event(1:k) = int(c%load%event(1:k), c_int)
@@ -1161,7 +1164,8 @@ subroutine fa_lj_cycle(capacity, alpha, mu, n, use_profile, m, profile, estimate
       n_gap = int(c%gap%n, c_int)
       values = [c%p_fc, c%p_pf, c%p_snap, c%w_star, c%w_fraction, c%p_fc_err, c%p_pf_err, &
          c%p_snap_err, c%w_star_err, merge(1.0_c_double, 0.0_c_double, c%fc_by_jump), &
-         merge(1.0_c_double, 0.0_c_double, c%pf_by_jump)]
+         merge(1.0_c_double, 0.0_c_double, c%pf_by_jump), c%p_fc_peak, c%p_fc_peak_err, &
+         merge(1.0_c_double, 0.0_c_double, c%fc_peak_by_jump)]
       n_period = int(c%n_period, c_int)
       if (max(n_load, n_gap) > capacity) then
          stat = wa_capacity_too_small

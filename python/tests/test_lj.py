@@ -151,7 +151,7 @@ def test_profile_with_a_sample_not_finite_is_refused():
 
 def _same_sweep(a, b):
     for name in ("P_fc", "P_pf", "P_fc_err", "P_pf_err", "P_snap", "P_snap_err", "W_star",
-                 "W_star_err", "N", "status", "alpha", "mu"):
+                 "W_star_err", "P_fc_peak", "P_fc_peak_err", "N", "status", "alpha", "mu"):
         x, y = np.asarray(getattr(a, name)), np.asarray(getattr(b, name))
         assert x.shape == y.shape and x.dtype == y.dtype and x.tobytes() == y.tobytes(), name
     assert a.messages == b.messages
@@ -192,12 +192,12 @@ def test_one_point_is_the_facade_cycle():
     values of one direct facade cycle, bit for bit, and its message on failure."""
     from wavyadhesion import _wa_f2py as _f
     r = wa.critical_forces("lj", 0.3, 1.0, n=64, errors="nan")
-    out = _f.fa_lj_cycle(64, 0.3, 1.0, 64, 0, np.zeros(1), 1)
+    out = _f.fa_lj_cycle(64, 0.3, 1.0, 64, 0, np.zeros(1), 1, 0)
     v, n_period, status = out[12], out[13], out[14]
     assert status == 0 and int(r.N) == n_period and int(r.status) == 0
     got = [r.P_fc, r.P_pf, r.P_snap, r.W_star, r.P_fc_err, r.P_pf_err, r.P_snap_err,
-           r.W_star_err]
-    assert np.array(got).tobytes() == v[[0, 1, 2, 3, 5, 6, 7, 8]].tobytes()
+           r.W_star_err, r.P_fc_peak, r.P_fc_peak_err]
+    assert np.array(got).tobytes() == v[[0, 1, 2, 3, 5, 6, 7, 8, 11, 12]].tobytes()
     bad = wa.critical_forces("lj", 0.3, 0.0, n=64, errors="nan")
     assert int(bad.status) == 1 and "mu must be > 0" in bad.messages[()]
     assert math.isnan(float(bad.P_fc)) and int(bad.N) == 0
@@ -223,3 +223,38 @@ def test_profile_with_a_huge_n_allocates_nothing():
     res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=120)
     assert res.returncode == 0 and res.stdout.strip() == "refused", res.stderr[-2000:]
+
+def test_p_fc_peak_is_the_snap_where_dw_jumps(path_auto):
+    """alpha 0.3, mu 3: DW reaches full contact by a jump; LJ's snap lands with every gap
+    within the peak tension's 3^(1/6) eps, so P_fc_peak (b* = 1/2) is its snap load, by a
+    jump, and within 0.2 % of DW's and MD's P_fc (the paper's Fig. 5 comparison), while
+    LJ's P_fc (a* = 1/2) is 0.996."""
+    p = path_auto
+    assert wa.load_path("dw", 0.3, 3.0).fc_mechanism != "gradual"
+    assert p.fc_peak_by_jump and p.P_fc_peak == p.P_snap and 0 < p.P_fc_peak_err < 1e-4
+    for model in ("dw", "md"):
+        assert p.P_fc_peak == pytest.approx(float(wa.critical_forces(model, 0.3, 3.0).P_fc),
+                                            rel=2e-3)
+    c = wa.critical_forces("lj", 0.3, 3.0)
+    assert c.P_fc_peak == p.P_fc_peak and c.P_fc_peak_err == p.P_fc_peak_err
+
+
+def test_p_fc_peak_without_a_jump_lies_on_the_traced_curve():
+    """alpha 0.3, mu 1: the snap (0.3988) lands short of b* = 1/2, which loading then
+    reaches gradually: P_fc_peak lies in the load-stable interval of the traced curve where
+    the largest gap falls to 3^(1/6) eps (found here from the branch), near its linear
+    interpolation."""
+    p = wa.load_path("lj", 0.3, 1.0)
+    assert not p.fc_peak_by_jump and p.P_snap < p.P_fc_peak < p.P_fc
+    b = wa.trace_branch("lj", 0.3, 1.0, n=p.N)
+    h_peak = 3 ** (1 / 6) * (4 * 0.3**4) ** (1 / 3) / 1.0
+    i = next(k for k in range(len(b) - 1)
+             if b.stable[k] and b.stable[k + 1] and b.P_star[k] >= p.P_snap
+             and b.h_max[k] > h_peak >= b.h_max[k + 1])
+    lo, hi = sorted((b.P_star[i], b.P_star[i + 1]))
+    assert lo <= p.P_fc_peak <= hi
+    t = (b.h_max[i] - h_peak) / (b.h_max[i] - b.h_max[i + 1])
+    assert p.P_fc_peak == pytest.approx(b.P_star[i] + t * (b.P_star[i + 1] - b.P_star[i]),
+                                        abs=0.1 * (hi - lo) + 1e-12)
+
+

@@ -35,9 +35,13 @@ def test_shapes_and_statuses(small_map):
 def test_relative_error_equals_the_individual_calls(small_map):
     m = small_map
     lj = wa.critical_forces("lj", 0.3, 3.0)
-    lj_values = {"P_fc": float(lj.P_fc), "P_pf": float(lj.P_pf), "W_star": float(lj.W_star)}
-    lj_errs = {"P_fc": float(lj.P_fc_err), "P_pf": float(lj.P_pf_err),
+    # P_fc is compared with LJ's P_fc_peak (b* = 1/2), LJ's own P_fc kept aside
+    lj_values = {"P_fc": float(lj.P_fc_peak), "P_pf": float(lj.P_pf),
+                 "W_star": float(lj.W_star)}
+    lj_errs = {"P_fc": float(lj.P_fc_peak_err), "P_pf": float(lj.P_pf_err),
                "W_star": float(lj.W_star_err)}
+    assert m.lj["P_fc_contact"][0, 0] == float(lj.P_fc)
+    assert m.lj["P_snap"][0, 0] == float(lj.P_snap) and m.lj_seconds[0, 0] > 0
     for model in ("dw", "md"):
         p_fc, p_pf = wa.critical_forces(model, 0.3, 3.0)
         w = wa.gap_path(model, 0.3, 3.0).W_star
@@ -91,3 +95,53 @@ def test_bad_axes_are_refused():
         wa.model_error_map([0.3], [0.0])
     with pytest.raises(wa.InvalidArgumentError):
         wa.model_error_map([0.3], [1.0], models=("xx",))
+
+
+def test_n_max_caps_the_grid_and_names_the_n_needed():
+    """alpha 0.3, mu 10 needs N = 8192: unresolved under n_max = 2048 (the message names
+    the N needed and the cap; refused at once, nothing extrapolated), and n_max outside
+    [128, 16384] is refused."""
+    m = wa.model_error_map([0.3], [10.0], models=("dw",), n_max=2048)
+    assert m.status["dw"][0, 0] == "unresolved" and m.lj_status[0, 0] == "unresolved"
+    text = m.messages["lj", 0, 0]
+    assert "needs N = 8192" in text and "cap of 2048" in text
+    assert np.isnan(m.rel_error["dw", "P_fc"][0, 0]) and m.lj_N[0, 0] == 0
+    for bad in (64, 32768, 1.5):
+        with pytest.raises(wa.InvalidArgumentError, match="n_max"):
+            wa.model_error_map([0.3], [10.0], n_max=bad)
+
+
+def test_default_cap_is_16384():
+    """mu 1000 needs far more than 16384 points: the message names both."""
+    m = wa.model_error_map([0.3], [1000.0], models=("md",))
+    assert "cap of 16384" in m.messages["lj", 0, 0]
+
+
+def test_fc_mechanism_and_executor_order():
+    """The cohesive models' fc_mechanism per cell; an executor (cells submitted costliest
+    first, collected as they complete) gives the serial cells in place."""
+    from concurrent.futures import ThreadPoolExecutor
+    serial = wa.model_error_map([0.3], [1.0, 3.0], models=("dw",), n=128)
+    assert list(serial.fc_mechanism["dw"][0]) == [
+        wa.load_path("dw", 0.3, mu).fc_mechanism for mu in (1.0, 3.0)]
+    with ThreadPoolExecutor(2) as ex:
+        par = wa.model_error_map([0.3], [1.0, 3.0], models=("dw",), n=128, executor=ex)
+    for key, arr in serial.rel_error.items():
+        np.testing.assert_array_equal(par.rel_error[key], arr)
+    np.testing.assert_array_equal(par.lj_N, serial.lj_N)
+
+
+def test_only_the_grid_refusal_is_unresolved():
+    """A cell is "unresolved" only where LJ refused the grid (beyond the cap); the same
+    status from a trace that ran out of points (alpha 0.01, mu 2.5 at N = 4096: 20000
+    points before full contact) is a failure (never drawn as beyond the cap)."""
+    from wavyadhesion._errors import CAPACITY_TOO_SMALL, NOT_CONVERGED
+    from wavyadhesion._model_error import _cell_status
+    refusal = ("lj: the interaction zone (2.370E-06 of a period) needs N = 8388608 points "
+               "per period, above the automatic grid's cap of 4096; pass n explicitly")
+    assert _cell_status(CAPACITY_TOO_SMALL, refusal) == "unresolved"
+    assert _cell_status(CAPACITY_TOO_SMALL, "lj: n gives more than 8193 unknowns") == "unresolved"
+    trace = "lj_trace: more than max_points points before full contact"
+    assert _cell_status(CAPACITY_TOO_SMALL, trace) == "failed"
+    assert _cell_status(NOT_CONVERGED, refusal) == "failed"
+    assert _cell_status(0, "") == "ok"

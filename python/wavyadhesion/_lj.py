@@ -42,8 +42,9 @@ LJ_PATH_EVENTS = {3: "jump_start", 4: "jump_end", 5: "full_contact_reached",
 _TRACE_CAPACITY = 2048
 # A path holds at most 64 events (wa_bem_path)
 _PATH_CAPACITY = 64
-# The grid's cap: at most 16384 points per period (lj_problem)
-_GRID_CAP = 16384
+# The grid's cap: at most 16384 points per period (lj_problem; model_error_map's n_max)
+LJ_MAX_N = 16384
+_GRID_CAP = LJ_MAX_N
 
 
 def is_lj(model) -> bool:
@@ -206,10 +207,14 @@ class LJLoadPath(_LJPathBase):
     P_snap : float
         Load of the last jump on loading (the snap towards full contact; P_fc where
         loading has no jump).
-    P_fc_err, P_pf_err, P_snap_err : float
+    P_fc_peak : float
+        Load at which b* (the abscissa of the peak tension, h = 3^(1/6) eps) first
+        reaches 1/2 on loading (a jump's load where a jump reaches it): the full-contact
+        load comparable with DW's and MD's P_fc (their b* = 1/2 only in full contact).
+    P_fc_err, P_pf_err, P_snap_err, P_fc_peak_err : float
         |value at N - value at N/2| (0 with ``estimate=False``).
-    fc_by_jump, pf_by_jump : bool
-        Full contact reached, contact lost, by a jump.
+    fc_by_jump, pf_by_jump, fc_peak_by_jump : bool
+        Full contact reached, contact lost, b* = 1/2 reached, by a jump.
     N : int
         Grid points per period.
     """
@@ -222,9 +227,12 @@ class LJLoadPath(_LJPathBase):
     P_snap_err: float = 0.0
     fc_by_jump: bool = False
     pf_by_jump: bool = False
+    P_fc_peak: float = 0.0
+    P_fc_peak_err: float = 0.0
+    fc_peak_by_jump: bool = False
 
     _coordinates = ("model", "alpha", "mu", "N", "P_fc", "P_pf", "P_snap", "P_fc_err",
-                    "P_pf_err", "P_snap_err")
+                    "P_pf_err", "P_snap_err", "P_fc_peak", "P_fc_peak_err")
     _repr_fields = ("model", "alpha", "mu", "N", "events_n", "P_fc", "P_fc_err", "P_pf",
                     "P_pf_err")
 
@@ -267,6 +275,10 @@ class LJCriticalForces(TupleCompat, ResultMixin):
         Full-contact load, pull-off load, snap load, energy lost per gap cycle.
     P_fc_err, P_pf_err, P_snap_err, W_star_err : numpy.ndarray of float
         Their discretisation-error estimates |value at N - value at N/2|.
+    P_fc_peak, P_fc_peak_err : numpy.ndarray of float
+        Load at which b* (the abscissa of the peak tension) first reaches 1/2 on loading
+        (a jump's load where a jump reaches it; :class:`LJLoadPath`), the full-contact
+        load comparable with DW's and MD's P_fc, and its error estimate.
     N : numpy.ndarray of int
         Grid points per period of each point.
     status, messages : as :class:`CriticalForces` (``errors="nan"``).
@@ -288,9 +300,12 @@ class LJCriticalForces(TupleCompat, ResultMixin):
     alpha: Optional[np.ndarray] = None
     mu: Optional[np.ndarray] = None
     model: str = "lj"
+    P_fc_peak: Optional[np.ndarray] = None
+    P_fc_peak_err: Optional[np.ndarray] = None
 
     _columns = ("alpha", "mu", "P_fc", "P_pf", "P_fc_err", "P_pf_err", "P_snap",
-                "P_snap_err", "W_star", "W_star_err", "N", "status")
+                "P_snap_err", "W_star", "W_star_err", "N", "status", "P_fc_peak",
+                "P_fc_peak_err")
     _coordinates = ("model",)
     _repr_fields = ("model", "alpha", "mu", "P_fc", "P_fc_err", "P_pf", "P_pf_err")
     _tuple_fields = ("P_fc", "P_pf")
@@ -314,9 +329,11 @@ def lj_trace_branch(alpha, mu, n=None, profile=None) -> LJBranch:
                     sg[:k].astype(bool), ev[:k].copy(), ex[:k].copy(), *map(float, v))
 
 
-def _cycle(alpha, mu, n, use, samples, estimate):
-    """The facade's cycle: (load events, gap events, values, N, status, message)."""
-    out = _f.fa_lj_cycle(_PATH_CAPACITY, alpha, mu, n, use, samples, int(bool(estimate)))
+def _cycle(alpha, mu, n, use, samples, estimate, n_max=0):
+    """The facade's cycle: (load events, gap events, values, N, status, message); n_max
+    the automatic grid's cap (0: the library's)."""
+    out = _f.fa_lj_cycle(_PATH_CAPACITY, alpha, mu, n, use, samples, int(bool(estimate)),
+                         n_max)
     (ls, le, la, lp, lg, nl, gs, ge, ga, gp, gg, ng, values, n_period, status,
      message) = out
     nl, ng = int(nl), int(ng)
@@ -341,7 +358,9 @@ def lj_load_path(alpha, mu, n=None, profile=None, estimate=True) -> LJLoadPath:
     alpha, mu, load, _, v, n_period = _scalar_cycle(alpha, mu, n, profile, estimate)
     return LJLoadPath("lj", alpha, mu, n_period, *load, P_fc=float(v[0]), P_pf=float(v[1]),
                       P_snap=float(v[2]), P_fc_err=float(v[5]), P_pf_err=float(v[6]),
-                      P_snap_err=float(v[7]), fc_by_jump=bool(v[9]), pf_by_jump=bool(v[10]))
+                      P_snap_err=float(v[7]), fc_by_jump=bool(v[9]), pf_by_jump=bool(v[10]),
+                      P_fc_peak=float(v[11]), P_fc_peak_err=float(v[12]),
+                      fc_peak_by_jump=bool(v[13]))
 
 
 def lj_gap_path(alpha, mu, n=None, profile=None, estimate=True) -> LJGapPath:
@@ -354,8 +373,9 @@ def lj_gap_path(alpha, mu, n=None, profile=None, estimate=True) -> LJGapPath:
 def _cell(task):
     """Worker of lj_critical_forces (module level: picklable for processes, dask, MPI): one
     cycle's (values, N, status, message) from the facade."""
-    alpha, mu, n, use, samples, estimate = task
-    _, _, values, n_period, status, message = _cycle(alpha, mu, n, use, samples, estimate)
+    alpha, mu, n, use, samples, estimate, n_max = task
+    _, _, values, n_period, status, message = _cycle(alpha, mu, n, use, samples, estimate,
+                                                     n_max)
     return values, n_period, status, message
 
 
@@ -366,23 +386,28 @@ def _cell_interruptibly(task):
 
 
 def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise", estimate=True,
-                       executor=None, progress=None) -> LJCriticalForces:
+                       executor=None, progress=None, n_max=None) -> LJCriticalForces:
     """The LJ critical values over broadcast (alpha, mu) (see :func:`critical_forces`): one
     task per point, serially or on `executor`, in the order of the points (the results
-    are the serial ones bit for bit); `progress` reports the points done."""
+    are the serial ones bit for bit); `progress` reports the points done. ``n_max``: the
+    automatic grid's cap, in [128, 16384] (None: the library's, 2048); a point whose zone
+    needs more is refused (status "output capacity too small", the message naming the N
+    it needs)."""
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not one of 'raise', 'nan'",
                                    INVALID_ARGUMENT)
     a_arr, m_arr = np.broadcast_arrays(float_array(alpha, "alpha"), float_array(mu, "mu"))
     shape = a_arr.shape
     n, use, samples = lj_inputs(n, profile)
+    n_max = 0 if n_max is None else count_in(n_max, "n_max", 128, _GRID_CAP)
     a_f, m_f = a_arr.reshape(-1), m_arr.reshape(-1)
     size = a_f.size
-    vals = np.full((size, 9), np.nan)
+    vals = np.full((size, 11), np.nan)
     grid = np.zeros(size, dtype=np.int32)
     stat = np.zeros(size, dtype=np.int32)
     messages = {}
-    tasks = [(float(a_f[k]), float(m_f[k]), n, use, samples, estimate) for k in range(size)]
+    tasks = [(float(a_f[k]), float(m_f[k]), n, use, samples, estimate, n_max)
+             for k in range(size)]
     report = make_progress(progress, size, "critical_forces (lj)")
     cells = iter_chunks(_cell_interruptibly if executor is None else _cell, tasks, executor)
     try:
@@ -396,7 +421,7 @@ def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise", estimate
                 messages[key] = message_text(message)
                 stat[k] = status
                 continue
-            vals[k] = v[:9]
+            vals[k] = np.concatenate([v[:9], v[11:13]])
             grid[k] = n_period
     finally:
         cells.close()                    # on an executor: cancels what has not started
@@ -404,11 +429,12 @@ def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise", estimate
             report.close()
     col = {name: shaped(vals[:, i], shape) for i, name in enumerate(
         ("P_fc", "P_pf", "P_snap", "W_star", "W_fraction", "P_fc_err", "P_pf_err",
-         "P_snap_err", "W_star_err"))}
+         "P_snap_err", "W_star_err", "P_fc_peak", "P_fc_peak_err"))}
     return LJCriticalForces(col["P_fc"], col["P_pf"], col["P_fc_err"], col["P_pf_err"],
                             col["P_snap"], col["P_snap_err"], col["W_star"],
                             col["W_star_err"], shaped(grid, shape), shaped(stat, shape),
-                            messages, shaped(a_f.copy(), shape), shaped(m_f.copy(), shape))
+                            messages, shaped(a_f.copy(), shape), shaped(m_f.copy(), shape),
+                            P_fc_peak=col["P_fc_peak"], P_fc_peak_err=col["P_fc_peak_err"])
 
 
 def lj_profile(alpha, mu, a_star, n=None, profile=None):

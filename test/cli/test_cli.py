@@ -993,21 +993,27 @@ def test_map_says_it_is_computing_on_a_terminal(cli):
 # CLI must reproduce them to their error estimates.
 LJ_P_FC_REF = 0.99600001838
 LJ_P_PF_REF = -0.40595099926
+LJ_P_FC_PEAK_REF = 0.38642269871      # P_fc_peak (b* = 1/2) there
 
 
 def test_lj_critical_matches_the_fortran_suite_with_error_columns(cli):
     res = run(cli, "critical", "--model", "lj", "--alpha", "0.3", "--mu", "3")
     lines = res.stdout.splitlines()
-    assert "# columns: alpha mu P_fc P_pf P_fc_err P_pf_err" in lines
+    assert "# columns: alpha mu P_fc P_pf P_fc_err P_pf_err P_fc_peak P_fc_peak_err" in lines
     assert any("16/(9 sqrt 3) sigma0" in l for l in lines)
     assert any("(4 alpha^4)^(1/3)/mu" in l for l in lines)
     assert any("N = 512" in l for l in lines)
-    alpha, mu, p_fc, p_pf, fc_err, pf_err = map(float, lines[-1].split())
+    assert any("P_fc_peak: load at which b*" in l for l in lines)
+    alpha, mu, p_fc, p_pf, fc_err, pf_err, peak, peak_err = map(float, lines[-1].split())
     assert (alpha, mu) == (0.3, 3.0)
     # 1e-11: the rounding of the quoted reference values
     assert abs(p_fc - LJ_P_FC_REF) <= fc_err + 1e-11
     assert abs(p_pf - LJ_P_PF_REF) <= pf_err + 1e-11
     assert 0 < fc_err < 1e-6 and 0 < pf_err < 1e-6
+    # b* reaches 1/2 by the snap into full contact: near DW's own snap to full contact
+    assert abs(peak - LJ_P_FC_PEAK_REF) <= peak_err + 1e-11 and 0 < peak_err < 1e-4
+    dw_row = run(cli, "critical", "--model", "dw", "--alpha", "0.3", "--mu", "3").stdout
+    assert abs(peak - float(dw_row.splitlines()[-1].split()[2])) < 2e-3
 
 
 def test_lj_path_gap_prints_the_cycle_and_w_star(cli):

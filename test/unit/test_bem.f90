@@ -42,7 +42,9 @@ contains
          new_unittest("shifted_profile_whole_period", test_shifted), &
          new_unittest("two_grid_against_dense", test_two_grid), &
          new_unittest("w_star_from_energies", test_w_star_energies), &
-         new_unittest("w_star_zero_and_scaled_steps", test_w_star_zero)]
+         new_unittest("w_star_zero_and_scaled_steps", test_w_star_zero), &
+         new_unittest("fc_peak_gradual_alpha03_mu1", test_fc_peak_gradual), &
+         new_unittest("long_range_corner_mu001", test_long_range)]
    end subroutine collect_bem
 
    !> A = H diag(lambda) H (H a Householder reflector): inertia and solve.
@@ -202,6 +204,33 @@ contains
       call lj_problem(params, problem, status, msg)
       call check(error, status == wa_capacity_too_small .and. index(msg, "2048") > 0, &
          "automatic grid cap: "//trim(msg))
+      if (allocated(error)) return
+      ! n_max raises the automatic grid's cap (alpha 0.3, mu 10 needs N = 8192), a zone
+      ! beyond it is refused naming the N it needs (mu 30: 65536), and n_max outside
+      ! [128, 16384] is refused naming n_max
+      call new_params(0.3_wp, 10.0_wp, params, status)
+      call lj_problem(params, problem, status, msg)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "N = 8192") > 0 &
+         .and. index(msg, "cap of 2048") > 0, "default cap: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, lj_auto_n(params) == 0 .and. lj_auto_n(params, 16384) == 8192, &
+         "lj_auto_n with a cap")
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n_max=16384)
+      call check(error, status == wa_ok .and. problem%grid%n_period == 8192, "n_max 16384")
+      if (allocated(error)) return
+      call new_params(0.3_wp, 30.0_wp, params, status)
+      call lj_problem(params, problem, status, msg, n_max=16384)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "N = 65536") > 0 &
+         .and. index(msg, "cap of 16384") > 0, "beyond the cap: "//trim(msg))
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n_max=100)
+      call check(error, status == wa_invalid_argument .and. index(msg, "n_max") > 0, &
+         "n_max below 128")
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n_max=32768)
+      call check(error, status == wa_invalid_argument .and. index(msg, "n_max") > 0, &
+         "n_max above 16384")
    end subroutine test_bad_input
 
    !> Far apart: unstable under load control, stable under gap control; the end: stable
@@ -265,8 +294,9 @@ contains
    end subroutine test_snap
 
    !> alpha 0.3, mu 3 at the automatic grid (512): P_pf* and P_fc* agree with the grid of
-   !> half as many points to 1e-7 relative, the snap load to 1e-4 (N = 256 puts 6.5 points
-   !> on the interaction zone; at 512 against 1024 it agrees to 3e-9: study/ and doc).
+   !> half as many points to 1e-7 relative, the snap load (= P_fc,peak*) to 1e-4 (N = 256
+   !> puts 6.5 points on the interaction zone; at 512 against 1024 it agrees to 3e-9:
+   !> study/ and doc).
    subroutine test_convergence(error)
       type(error_type), allocatable, intent(out) :: error
       type(params_type) :: params
@@ -283,6 +313,15 @@ contains
          "P_pf, P_fc, snap: N and N/2 within 1e-7")
       if (allocated(error)) return
       call check(error, cyc%w_star > 0.0_wp .and. cyc%w_star_err < 1.0e-4_wp*cyc%w_star, "W*")
+      if (allocated(error)) return
+      ! loading snaps into full contact: the landing state has every gap within the peak
+      ! tension's 3^(1/6) eps, so P_fc,peak* is the snap load (by a jump), far below P_fc*
+      ! (a* = 1/2, 0.996); DW's P_fc* there is its own snap, 0.3858 (Fig. 5's comparison)
+      call check(error, cyc%fc_peak_by_jump .and. cyc%p_fc_peak == cyc%p_snap .and. &
+         cyc%p_fc_peak < 0.5_wp*cyc%p_fc, "P_fc,peak = the snap load")
+      if (allocated(error)) return
+      call check(error, abs(cyc%p_fc_peak - 0.3858_wp) < 2.0e-3_wp .and. &
+         cyc%p_fc_peak_err < 1.0e-4_wp, "P_fc,peak near DW's 0.3858, resolved")
    end subroutine test_convergence
 
    !> alpha -> 0 at fixed mu: the stable contact states approach Westergaard's
@@ -627,5 +666,68 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_w_star_zero
+
+   !> alpha 0.3, mu 1: loading snaps at 0.3988 onto a state whose largest gap is still
+   !> beyond 3^(1/6) eps, then rises gradually: P_fc,peak* is where the largest gap falls
+   !> to it, between the traced points that bracket it (and so between the snap and
+   !> P_fc*); the traced branch, walked independently here, shows that bracket.
+   subroutine test_fc_peak_gradual(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      type(lj_problem_type) :: problem
+      type(lj_branch_type) :: br
+      real(wp) :: peak
+      integer :: status, i
+      logical :: bracketed
+      character(len=256) :: msg
+      msg = ""
+      call new_params(0.3_wp, 1.0_wp, params, status)
+      call lj_cycle(params, cyc, status, msg)
+      call check(error, status == wa_ok, "lj_cycle: "//trim(msg))
+      if (allocated(error)) return
+      call check(error, .not. cyc%fc_peak_by_jump .and. cyc%p_fc_peak > cyc%p_snap .and. &
+         cyc%p_fc_peak < cyc%p_fc .and. cyc%p_fc_peak_err < 1.0e-8_wp, "gradual, ordered")
+      if (allocated(error)) return
+      call lj_problem(params, problem, status, msg, n=cyc%n_period)
+      call lj_trace(problem, br, status, msg)
+      call check(error, status == wa_ok, "lj_trace: "//trim(msg))
+      if (allocated(error)) return
+      peak = law_peak(problem%law)
+      bracketed = .false.
+      do i = 1, br%n - 1       ! the first load-stable interval where h_max falls to the peak
+         if (br%stable_load(i) .and. br%stable_load(i + 1) .and. br%h_max(i) > peak .and. &
+            br%h_max(i + 1) <= peak .and. br%p_star(i) >= cyc%p_snap) then
+            bracketed = cyc%p_fc_peak >= min(br%p_star(i), br%p_star(i + 1)) .and. &
+               cyc%p_fc_peak <= max(br%p_star(i), br%p_star(i + 1))
+            exit
+         end if
+      end do
+      call check(error, bracketed, "P_fc,peak inside the traced bracket")
+   end subroutine test_fc_peak_gradual
+
+   !> mu = 0.01 at alpha 10 and 3 (eps/Delta = 3420, 1600: the range far beyond the
+   !> amplitude): the trace reaches full contact (its step scales with eps; at 0.1 Delta it
+   !> needed ~1e5 points), and the pull-off is the flat surfaces' peak tension
+   !> 16/(9 sqrt 3) sigma0 to 1e-3 (the wave is negligible against eps).
+   subroutine test_long_range(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(params_type) :: params
+      type(lj_cycle_type) :: cyc
+      real(wp) :: alphas(2)
+      integer :: status, k
+      character(len=256) :: msg
+      alphas = [10.0_wp, 3.0_wp]
+      do k = 1, 2
+         msg = ""
+         call new_params(alphas(k), 0.01_wp, params, status)
+         call lj_cycle(params, cyc, status, msg)
+         call check(error, status == wa_ok, "lj_cycle: "//trim(msg))
+         if (allocated(error)) return
+         call check_close(error, cyc%p_pf, -16.0_wp/(9.0_wp*sqrt(3.0_wp))*params%sigma0, &
+            1.0e-3_wp, what="flat pull-off")
+         if (allocated(error)) return
+      end do
+   end subroutine test_long_range
 
 end module test_bem
