@@ -188,6 +188,10 @@ def main():
                     help="draw the figure from a saved table (no computation; --alpha, --mu, "
                          "--workers ignored; --n-max only labels the figure)")
     args = ap.parse_args()
+    try:        # fail before a long computation, not after it
+        import matplotlib  # noqa: F401
+    except ImportError:
+        ap.error("matplotlib is needed to draw the figure: pip install matplotlib")
     if args.from_table:
         m = from_table(args.from_table)
         path = Path(args.outdir) / "model_error_map.png"
@@ -200,10 +204,11 @@ def main():
     m = compute(alpha, mu, args.workers, args.n_max)
     seconds = time.perf_counter() - t0
     path = Path(args.outdir) / "model_error_map.png"
-    draw(m, path, args.n_max)
+    # the table first: a figure that cannot be drawn never loses a computed map
     table = Path(args.outdir) / "model_error_map.csv"
     with open(table, "w", newline="") as fh:
         csv.writer(fh, lineterminator="\n").writerows(table_rows(m))
+    draw(m, path, args.n_max)
     print(f"grid: alpha {args.alpha} x mu {args.mu} ({alpha.size * mu.size} cells), "
           f"n_max {args.n_max}, {args.workers} workers: {seconds:.1f} s wall")
     print(repr(m))
