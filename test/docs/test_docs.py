@@ -198,6 +198,7 @@ CLAIMS = [
     ("doc/user-guide.md", "with P_fc = {} (error", lambda: f"{lj_value('P_fc'):.10f}"),
     ("doc/user-guide.md", "estimate {}) and P_pf", lambda: f"{lj_value('P_fc_err'):.1e}"),
     ("doc/user-guide.md", "and P_fc_peak = {}, the load", lambda: f"{lj_value('P_fc_peak'):.10f}"),
+    ("doc/c-api.md", "P_fc_peak = {}, the snap load", lambda: f"{lj_value('P_fc_peak'):.10f}"),
     ("doc/user-guide.md", "and MD's P_fc, their b* = 1/2, are\n{}",
      lambda: " and ".join(f"{critical(m, '0.3', '3')[0]:.4f}" for m in ("dw", "md"))),
     ("doc/theory.md", "P_fc,peak* is its snap load\n{}", lambda: f"{lj_value('P_fc_peak'):.5f}"),
