@@ -19,8 +19,9 @@
  *    is NULL or its capacity <= 0, "" on success, a reason on failure;
  *  - messages: "" on WA_OK; on failure a whole message (fetched with a large buffer) that
  *    names something, and for WA_INVALID_ARGUMENT an argument the caller passed out of range;
- *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, ...), gap control's P_min
- *    at most every P* of the retraction (gap_path, gap_law, P_pf), a jump keeps gbar*;
+ *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, LJ's P_fc_peak <= P_fc, ...),
+ *    gap control's P_min at most every P* of the retraction (gap_path, gap_law, P_pf), a
+ *    jump keeps gbar*;
  *  - the same call twice (with and without a message, through the 0.3 function or its 0.2
  *    compatibility name) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
