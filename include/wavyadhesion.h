@@ -338,13 +338,16 @@ int wa_gap_critical(int model, double alpha, double mu, double *values, char *me
    WA_INVALID_ARGUMENT. */
 
 /* The load- and gap-controlled cycle: P_fc*, P_pf*, the snap load (the last jump on
-   loading) and W* (over p* Delta), with errors[4] (NULL allowed) = |value at N - value
-   at N/2| of the same four and *n_used (NULL allowed) = N. n: 0 or a multiple of 4,
-   >= 16 (N/2 is solved too). On any failure the four values and errors are NaN and
-   *n_used = 0 (each one not NULL). Never WA_CAPACITY_TOO_SMALL. */
+   loading), W* (over p* Delta) and (NULL allowed) P_fc_peak*, the load at which b* first
+   reaches 1/2 on loading (the full-contact load comparable with DW's and MD's P_fc*),
+   with errors[5] (NULL allowed) = |value at N - value at N/2| of the same five and
+   *n_used (NULL allowed) = N. n: 0 or a multiple of 4, >= 16 (N/2 is solved too). On any
+   failure the five values and errors are NaN and *n_used = 0 (each one not NULL). Never
+   WA_CAPACITY_TOO_SMALL. */
 int wa_lj_cycle(double alpha, double mu, int n, int n_profile, const double *profile,
                 double *P_fc, double *P_pf, double *P_snap, double *W_star,
-                double *errors, int *n_used, char *message, int message_capacity);
+                double *P_fc_peak, double *errors, int *n_used, char *message,
+                int message_capacity);
 
 /* The equilibrium curve from far apart to full contact: P*, gbar* (over Delta), a*, b*
    of each point, and (each NULL allowed) its stability under load and gap control (1/0)

@@ -25,12 +25,14 @@ module wa_capi_lj
 contains
 
    !> int wa_lj_cycle(alpha, mu, n, n_profile, profile, *P_fc, *P_pf, *P_snap, *W_star,
-   !> errors[4], *n_used, message, message_capacity): the load- and gap-controlled cycle of
-   !> the smooth (Lennard-Jones) model (lj_cycle) on the grid of n points per period
-   !> (0: automatic), with the error estimates |value at N - value at N/2|. On any failure
-   !> the four scalars and errors (each not NULL) are NaN and *n_used = 0.
+   !> *P_fc_peak, errors[5], *n_used, message, message_capacity): the load- and
+   !> gap-controlled cycle of the smooth (Lennard-Jones) model (lj_cycle) on the grid of n
+   !> points per period (0: automatic), with the error estimates |value at N - value at
+   !> N/2|. On any failure the five scalars and errors (each not NULL) are NaN and
+   !> *n_used = 0.
    function capi_lj_cycle(alpha, mu, n, n_profile, profile, p_fc, p_pf, p_snap, w_star, &
-         errors, n_used, message, message_capacity) result(status) bind(C, name="wa_lj_cycle")
+         p_fc_peak, errors, n_used, message, message_capacity) result(status) &
+         bind(C, name="wa_lj_cycle")
       !> Johnson's parameter and the transition parameter (the supported domain, mu > 0)
       real(c_double), value, intent(in) :: alpha, mu
       !> Grid points per period: 0 (automatic) or a multiple of 4, >= 16
@@ -41,7 +43,10 @@ contains
       type(c_ptr), value, intent(in) :: profile
       !> double *: receive P_fc*, P_pf*, the snap load (over p*) and W* (over p* Delta)
       type(c_ptr), value, intent(in) :: p_fc, p_pf, p_snap, w_star
-      !> double[4] or NULL: the error estimates of the same four
+      !> double * or NULL: receives P_fc,peak*, the load at which b* first reaches 1/2 on
+      !> loading (the full-contact load comparable with DW's and MD's P_fc*)
+      type(c_ptr), value, intent(in) :: p_fc_peak
+      !> double[5] or NULL: the error estimates of the same five
       type(c_ptr), value, intent(in) :: errors
       !> int * or NULL: the grid points per period used
       type(c_ptr), value, intent(in) :: n_used
@@ -49,8 +54,8 @@ contains
       type(c_ptr), value, intent(in) :: message
       integer(c_int), value, intent(in) :: message_capacity
       integer(c_int) :: status
-      status = lj_cycle_core(alpha, mu, n, n_profile, profile, [p_fc, p_pf, p_snap, w_star], &
-         errors, n_used, message, message_capacity)
+      status = lj_cycle_core(alpha, mu, n, n_profile, profile, [p_fc, p_pf, p_snap, w_star, &
+         p_fc_peak], errors, n_used, message, message_capacity)
    end function capi_lj_cycle
 
    !> int wa_lj_trace(alpha, mu, n, n_profile, profile, capacity, P_star[], gbar[],
@@ -124,13 +129,13 @@ contains
 
    ! ---------------------------------------------------------------- cores
 
-   !> Validate, run lj_cycle, write the four values, their errors and N.
-   !> values = [P_fc, P_pf, P_snap, W_star].
+   !> Validate, run lj_cycle, write the five values, their errors and N.
+   !> values = [P_fc, P_pf, P_snap, W_star, P_fc_peak] (the last may be NULL).
    function lj_cycle_core(alpha, mu, n, n_profile, profile, values, errors, n_used, message, &
          message_capacity) result(status)
       real(c_double), intent(in) :: alpha, mu
       integer(c_int), intent(in) :: n, n_profile, message_capacity
-      type(c_ptr), intent(in) :: profile, values(4), errors, n_used, message
+      type(c_ptr), intent(in) :: profile, values(5), errors, n_used, message
       integer(c_int) :: status
       type(params_type) :: params
       type(lj_problem_type) :: problem
@@ -142,10 +147,10 @@ contains
 
       msg = ""
       stat = wa_ok
-      do k = 1, 4
+      do k = 1, 5
          call put_nan(values(k))
       end do
-      call put_nans(errors, 4_c_int)
+      call put_nans(errors, 5_c_int)
       call put_int(n_used, 0)
       if (.not. all([(c_associated(values(k)), k = 1, 4)])) call set_error( &
          wa_invalid_argument, "P_fc, P_pf, P_snap and W_star must not be NULL", stat, msg)
@@ -164,8 +169,9 @@ contains
          call store_scalar(values(2), cycle%p_pf)
          call store_scalar(values(3), cycle%p_snap)
          call store_scalar(values(4), cycle%w_star)
+         if (c_associated(values(5))) call store_scalar(values(5), cycle%p_fc_peak)
          if (c_associated(errors)) call store_reals(errors, [cycle%p_fc_err, &
-            cycle%p_pf_err, cycle%p_snap_err, cycle%w_star_err])
+            cycle%p_pf_err, cycle%p_snap_err, cycle%w_star_err, cycle%p_fc_peak_err])
          call put_int(n_used, cycle%n_period)
       end if
       status = int(stat, c_int)

@@ -36,7 +36,7 @@ from ._map import GAP_APPROACH_NAMES, GAP_RETRACTION_NAMES
 from ._gapcritical import GAP_CRITICAL_FIELDS, GapCritical, gap_critical
 from ._energy import EnergyLost, energy_lost
 from ._errors import (ConvergenceError, InvalidArgumentError, InvalidTypeError,
-                      NoSolutionError, WavyAdhesionError)
+                      NoSolutionError, ResolutionError, WavyAdhesionError)
 from ._args import MODELS
 from ._equilibrium import Equilibrium, State, equilibrium, jkr_load, roots, westergaard_load
 from ._branch import EVENTS, Branch, BranchEvent, trace_branch
@@ -96,6 +96,7 @@ __all__ = [
     "InvalidArgumentError",
     "InvalidTypeError",
     "NoSolutionError",
+    "ResolutionError",
     "Params",
     "Scales",
     "State",

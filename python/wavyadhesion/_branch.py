@@ -172,6 +172,9 @@ def trace_branch(model: str, alpha: float, mu: float, *, n: Optional[int] = None
     ------
     InvalidArgumentError
         Unknown model, alpha <= 0, mu < 0, NaN or infinite values.
+    ResolutionError
+        (model="lj") The grid refuses `n` (beyond its cap) or the automatic grid's zone
+        needs more than 2048 points; the message names the N or the cap.
     ConvergenceError
         The continuation failed (e.g. step-size underflow).
 

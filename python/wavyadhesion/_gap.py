@@ -199,6 +199,9 @@ def gap_path(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
     ------
     InvalidArgumentError
         Unknown model, or alpha or mu outside its range.
+    ResolutionError
+        (model="lj") The grid refuses `n` (beyond its cap) or the automatic grid's zone
+        needs more than 2048 points; the message names the N or the cap.
     ConvergenceError
         The continuation or a point solve failed.
 

@@ -52,11 +52,14 @@ def is_lj(model) -> bool:
     return isinstance(model, str) and model.lower() == "lj"
 
 
-def reject_lj_inputs(n, profile) -> None:
-    """InvalidArgumentError when n or profile is given to a model other than "lj"."""
+def reject_lj_inputs(n, profile, n_max=None) -> None:
+    """InvalidArgumentError when n, profile or n_max is given to a model other than "lj"."""
     if n is not None or profile is not None:
         raise InvalidArgumentError("n and profile are only for model='lj' (the grid and "
                                    "the surface of the smooth model)", INVALID_ARGUMENT)
+    if n_max is not None:
+        raise InvalidArgumentError("n_max is only for model='lj' (the cap of the smooth "
+                                   "model's automatic grid)", INVALID_ARGUMENT)
 
 
 def lj_inputs(n, profile):
@@ -391,8 +394,8 @@ def lj_critical_forces(alpha, mu, n=None, profile=None, errors="raise", estimate
     task per point, serially or on `executor`, in the order of the points (the results
     are the serial ones bit for bit); `progress` reports the points done. ``n_max``: the
     automatic grid's cap, in [128, 16384] (None: the library's, 2048); a point whose zone
-    needs more is refused (status "output capacity too small", the message naming the N
-    it needs)."""
+    needs more is refused (status 4, the message naming the N it needs: ResolutionError,
+    or that status and message with errors="nan")."""
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not one of 'raise', 'nan'",
                                    INVALID_ARGUMENT)

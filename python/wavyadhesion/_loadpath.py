@@ -229,6 +229,9 @@ def load_path(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
     ------
     InvalidArgumentError
         Unknown model or an argument outside its range.
+    ResolutionError
+        (model="lj") The grid refuses `n` (beyond its cap) or the automatic grid's zone
+        needs more than 2048 points; the message names the N or the cap.
     ConvergenceError
         The continuation or a landing-point solve failed.
 
@@ -259,8 +262,8 @@ def load_path(model: str, alpha: float, mu: float, *, n: Optional[int] = None,
 def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str = "raise",
                     executor: Optional[Executor] = None, chunk_size: Optional[int] = None,
                     progress: Union[bool, Callable[[int, int], Any], None] = None,
-                    n: Optional[int] = None, profile: Optional[ArrayLike] = None
-                    ) -> Union[CriticalForces, LJCriticalForces]:
+                    n: Optional[int] = None, profile: Optional[ArrayLike] = None,
+                    n_max: Optional[int] = None) -> Union[CriticalForces, LJCriticalForces]:
     """Critical forces P_fc* (full contact reached on loading) and P_pf* (pull-off on
     unloading), vectorised over mu and broadcast with alpha.
 
@@ -303,6 +306,11 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
         under way runs on to its end in a helper thread, its result dropped). The result
         is an :class:`LJCriticalForces`: ``P_fc, P_pf`` with ``P_fc_err, P_pf_err``
         (|value at N - value at N/2|), the snap load and W* with theirs, and ``N``.
+    n_max : int, optional
+        ``model="lj"`` only: the cap of the automatic grid, in [128, 16384] (None: the
+        library's, 2048; not used where `n` is given). A point whose interaction zone
+        needs more is refused: :class:`ResolutionError` naming the N it needs (with
+        errors="nan": status 4 and that message).
 
     Returns
     -------
@@ -322,6 +330,10 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
         message gives the index of the first bad point).
     InvalidTypeError
         alpha or mu is None, complex, a string or a masked array with masked values.
+    ResolutionError
+        (model="lj", errors="raise") The LJ grid refuses a point: `n` beyond the grid's
+        cap, or the automatic grid beyond its cap (2048 or `n_max`); the message names
+        the N needed or the cap. Also an InvalidArgumentError.
     ConvergenceError
         (errors="raise") A point's branch or load path could not be computed; the
         message gives its index, alpha and mu.
@@ -335,8 +347,8 @@ def critical_forces(model: str, alpha: ArrayLike, mu: ArrayLike, *, errors: str 
     if is_lj(model):
         chunk_size_for(chunk_size, None, 1.0, 1)        # checked; one task per point
         return lj_critical_forces(alpha, mu, n, profile, errors, executor=executor,
-                                  progress=progress)
-    reject_lj_inputs(n, profile)
+                                  progress=progress, n_max=n_max)
+    reject_lj_inputs(n, profile, n_max)
     code = model_code(model)
     if errors not in ("raise", "nan"):
         raise InvalidArgumentError(f"errors = {errors!r} is not 'raise' or 'nan'", 1)

@@ -119,6 +119,9 @@ def profile(model: str, alpha: float, mu: float, a_star: float,
     NoSolutionError
         No state at `a_star` has that c*, "dw" at a* = 0, "jkr" at a* = 1/2, or "md" at
         a* = 0 with no state without contact at `c_star`.
+    ResolutionError
+        (model="lj") The grid refuses `n` (beyond its cap) or the automatic grid's zone
+        needs more than 2048 points; the message names the N or the cap.
     ConvergenceError
         The solver failed.
 

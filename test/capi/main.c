@@ -1509,45 +1509,84 @@ static void test_compat_forwards(void) {
    }
 }
 
+/* P_fc_peak of the cycle at N against an independent reading of wa_lj_trace at the same
+   N: under load control the load on reaching trace point k is M_k, the running maximum
+   of P* over points 0..k (a jump at a fold keeps the load until the curve comes back to
+   it), so the load at which b* first reaches 1/2, between points j - 1 and j (j the
+   first point with b* >= 1/2), lies in [M_{j-1}, M_j]. */
+static void lj_peak_against_trace(double peak, int n) {
+   enum { cap = 4000 };
+   static double ps[cap], gb[cap], as[cap], bs[cap];
+   double m_prev = -INFINITY, m = -INFINITY;
+   int st, n_pts = 0, j;
+   char msg[256];
+   st = wa_lj_trace(0.3, 3.0, n, 0, NULL, cap, ps, gb, as, bs, NULL, NULL, NULL, &n_pts, NULL,
+                    msg, 256);
+   CHECK(st == WA_OK && n_pts > 10, "lj_trace at N = %d: %d '%s'", n, st, msg);
+   if (st != WA_OK) return;
+   for (j = 0; j < n_pts && bs[j] < 0.5; j++) {
+      m_prev = m;
+      m = fmax(m, ps[j]);
+   }
+   CHECK(j > 0 && j < n_pts, "lj_trace: b* reaches 1/2 at point %d of %d", j, n_pts);
+   if (j == 0 || j >= n_pts) return;
+   m_prev = m;
+   m = fmax(m, ps[j]);
+   CHECK(peak >= m_prev - 1e-12 && peak <= m + 1e-12,
+         "lj P_fc_peak %.12g outside [%.12g, %.12g] (trace point %d, b* %.6g)", peak, m_prev,
+         m, j, bs[j]);
+}
+
 /* Smooth adhesion: the cycle against the converged reference values (within the
    returned N vs N/2 estimates), NULL optional outputs give the same values, the trace's
    counts, capacity and options, and the documented failures. */
 static void test_lj(void) {
-   double fc, pf, snap, w, err[4], fc2, pf2, snap2, w2, sin_prof[32];
+   double fc, pf, snap, w, peak, err[5], fc2, pf2, snap2, w2, peak2, sin_prof[32];
    int st, n_used = -1, i, n_pts = -1, n_pts2 = -1, n_used_t = -1;
    char msg[256];
    enum { cap = 4000 };
    static double ps[cap], gb[cap], as[cap], bs[cap], ps2[cap], gb2[cap], as2[cap], bs2[cap];
    static int sl[cap], sg[cap], ev[cap];
    strcpy(msg, "x");
-   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, err, &n_used, msg, 256);
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, &peak, err, &n_used, msg, 256);
    CHECK(st == WA_OK && msg[0] == '\0', "lj_cycle status %d message '%s'", st, msg);
    CHECK(fabs(fc - 0.99600001838) <= err[0] + 1e-9, "lj P_fc %.12g err %g", fc, err[0]);
    CHECK(fabs(pf + 0.40595099926) <= err[1] + 1e-9, "lj P_pf %.12g err %g", pf, err[1]);
    CHECK(n_used >= 16 && n_used % 4 == 0, "lj n_used %d", n_used);
    CHECK(w > 0 && isfinite(snap) && err[2] >= 0 && err[3] >= 0, "lj W* %g snap %g", w, snap);
-   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc2, &pf2, &snap2, &w2, NULL, NULL, NULL, 0);
+   /* P_fc_peak: the value of Python's critical_forces("lj", 0.3, 3.0).P_fc_peak and of
+      `critical --model lj` (the same N); here the snap load, within 0.2 % of DW's P_fc */
+   CHECK(fabs(peak - 0.3864226987) <= 1e-9 && err[4] >= 0 && err[4] < 1e-4,
+         "lj P_fc_peak %.12g err %g", peak, err[4]);
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc2, &pf2, &snap2, &w2, NULL, NULL, NULL, NULL, 0);
    CHECK(st == WA_OK && fc2 == fc && pf2 == pf && snap2 == snap && w2 == w,
          "lj_cycle with NULL optionals differs");
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc2, &pf2, &snap2, &w2, &peak2, NULL, NULL, NULL, 0);
+   CHECK(st == WA_OK && peak2 == peak, "lj_cycle P_fc_peak without errors differs");
+   lj_peak_against_trace(peak, n_used);
 
    /* failures: each names its argument; the outputs are NaN, n_used 0 */
-   st = wa_lj_cycle(0.3, 3.0, 250, 0, NULL, &fc, &pf, &snap, &w, err, &n_used, msg, 256);
-   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n = 250") && isnan(fc) && isnan(err[3]) &&
-            n_used == 0, "lj_cycle n = 250: %d '%s'", st, msg);
-   st = wa_lj_cycle(0.3, 3.0, 8, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   peak = 0.0;
+   st = wa_lj_cycle(0.3, 3.0, 250, 0, NULL, &fc, &pf, &snap, &w, &peak, err, &n_used, msg,
+                    256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n = 250") && isnan(fc) && isnan(peak) &&
+            isnan(err[3]) && isnan(err[4]) && n_used == 0, "lj_cycle n = 250: %d '%s'", st,
+         msg);
+   st = wa_lj_cycle(0.3, 3.0, 8, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n = 8"), "lj_cycle n = 8: '%s'", msg);
    for (i = 0; i < 32; i++) sin_prof[i] = 1.0 - cos(2.0 * pi * i / 32.0);
-   st = wa_lj_cycle(0.3, 3.0, 0, 3, sin_prof, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   st = wa_lj_cycle(0.3, 3.0, 0, 3, sin_prof, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "n_profile = 3"), "lj n_profile: '%s'", msg);
-   st = wa_lj_cycle(0.3, 0.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   st = wa_lj_cycle(0.3, 0.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "mu"), "lj mu = 0: '%s'", msg);
-   st = wa_lj_cycle(NAN, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   st = wa_lj_cycle(NAN, 3.0, 0, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "alpha"), "lj alpha NaN: '%s'", msg);
-   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, NULL, &snap, &w, NULL, NULL, msg, 256);
-   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "P_pf") && isnan(fc), "lj NULL: '%s'", msg);
+   st = wa_lj_cycle(0.3, 3.0, 0, 0, NULL, &fc, NULL, &snap, &w, &peak, NULL, NULL, msg, 256);
+   CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "P_pf") && isnan(fc) && isnan(peak),
+         "lj NULL: '%s'", msg);
    {  /* a sample that is not finite: refused (it crashed the solver before the check) */
       double bad_prof[4] = {0.0, INFINITY, 2.0, 1.0};
-      st = wa_lj_cycle(0.3, 3.0, 16, 4, bad_prof, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+      st = wa_lj_cycle(0.3, 3.0, 16, 4, bad_prof, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
       CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "profile") && isnan(fc),
             "lj non-finite profile: status %d '%s'", st, msg);
       bad_prof[1] = NAN;
@@ -1556,7 +1595,7 @@ static void test_lj(void) {
       CHECK(st == WA_INVALID_ARGUMENT && strstr(msg, "profile"),
             "lj_trace NaN profile: status %d '%s'", st, msg);
    }
-   st = wa_lj_cycle(0.3, 3.0, 20000, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, msg, 256);
+   st = wa_lj_cycle(0.3, 3.0, 20000, 0, NULL, &fc, &pf, &snap, &w, NULL, NULL, NULL, msg, 256);
    CHECK(st == WA_INVALID_ARGUMENT && isnan(fc), "lj n = 20000: %d '%s'", st, msg);
 
    /* the trace at n = 256, the sinusoid given as samples = NULL, counts and capacity */

@@ -72,6 +72,17 @@ def python_value(expression):
     return str(eval(expression, {"wa": wa}))
 
 
+def python_error(expression):
+    """The exception a Python expression over the installed package (``wa``) raises, as
+    "ClassName: message" (a docs quote of an error of the Python interface)."""
+    import wavyadhesion as wa
+    try:
+        eval(expression, {"wa": wa})
+    except wa.WavyAdhesionError as exc:
+        return f"{type(exc).__name__}: {exc}"
+    raise AssertionError(f"{expression} raised nothing")
+
+
 @functools.lru_cache(maxsize=None)
 def example_output(script):
     """What a python/examples script prints (run with the .venv's Python, its figure
@@ -190,6 +201,10 @@ CLAIMS = [
     ("doc/python.md", "{} ['branch_end', 'fold', 'fold', 'switch', 'branch_end']",
      lambda: branch_points("dw", "0.3", "5")),
     ("doc/python.md", "closed form at {} points", lambda: branch_points("westergaard")),
+    ("doc/python.md", 'load_path("lj", 0.3, 10.0)`\nraises `{}`',
+     lambda: python_error('wa.load_path("lj", 0.3, 10.0)')),
+    ("doc/python.md", "and `n=16388` (beyond the even grid's 16384) `{}`",
+     lambda: python_error('wa.load_path("lj", 0.3, 3.0, n=16388)')),
     ("doc/python.md", "It prints\n\n```\n{}\n```", lambda: "\n".join(
         example_output("python/examples/si_cycle.py").splitlines()[:3])),
     ("doc/python.md", 'repr(wa.trace_branch("dw", 0.3, 5.0))` is\n`{}`',
@@ -198,6 +213,7 @@ CLAIMS = [
     ("doc/user-guide.md", "with P_fc = {} (error", lambda: f"{lj_value('P_fc'):.10f}"),
     ("doc/user-guide.md", "estimate {}) and P_pf", lambda: f"{lj_value('P_fc_err'):.1e}"),
     ("doc/user-guide.md", "and P_fc_peak = {}, the load", lambda: f"{lj_value('P_fc_peak'):.10f}"),
+    ("doc/c-api.md", "P_fc_peak = {}, the snap load", lambda: f"{lj_value('P_fc_peak'):.10f}"),
     ("doc/user-guide.md", "and MD's P_fc, their b* = 1/2, are\n{}",
      lambda: " and ".join(f"{critical(m, '0.3', '3')[0]:.4f}" for m in ("dw", "md"))),
     ("doc/theory.md", "P_fc,peak* is its snap load\n{}", lambda: f"{lj_value('P_fc_peak'):.5f}"),

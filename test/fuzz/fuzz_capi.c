@@ -19,8 +19,9 @@
  *    is NULL or its capacity <= 0, "" on success, a reason on failure;
  *  - messages: "" on WA_OK; on failure a whole message (fetched with a large buffer) that
  *    names something, and for WA_INVALID_ARGUMENT an argument the caller passed out of range;
- *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, ...), gap control's P_min
- *    at most every P* of the retraction (gap_path, gap_law, P_pf), a jump keeps gbar*;
+ *  - documented orderings (P_fc >= P_pf, g_contact <= g_touch, LJ's P_fc_peak <= P_fc, ...),
+ *    gap control's P_min at most every P* of the retraction (gap_path, gap_law, P_pf), a
+ *    jump keeps gbar*;
  *  - the same call twice (with and without a message, through the 0.3 function or its 0.2
  *    compatibility name) gives the same bits;
  *  - cross checks: wa_roots against wa_equilibrium, wa_critical_sweep and wa_load_path
@@ -601,11 +602,11 @@ static void make_repro(call_t *c) {
          strcat(pr, "}");
       }
       if (c->family == F_LJ_CYCLE)
-         sprintf(c->repro, "wa_lj_cycle(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
+         sprintf(c->repro, "wa_lj_cycle(%s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s, %s%s)",
                  cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid), ci(mcap, c->n_profile), pr,
                  ptr_name(c, 0, "&P_fc"), ptr_name(c, 1, "&P_pf"), ptr_name(c, 2, "&P_snap"),
-                 ptr_name(c, 3, "&W"), ptr_name(c, 4, "errors"), ptr_name(c, 5, "&n_used"),
-                 msgpart);
+                 ptr_name(c, 3, "&W"), ptr_name(c, 4, "&P_fc_peak"), ptr_name(c, 5, "errors"),
+                 ptr_name(c, 6, "&n_used"), msgpart);
       else if (c->family == F_LJ_PROFILE)
          sprintf(c->repro, "wa_lj_profile(%s, %s, %s, %s, %s, %s, %d, %s, %s, %s, %s, %s%s)",
                  cd(a1, c->alpha), cd(a2, c->mu), ci(cap, c->n_grid), ci(mcap, c->n_profile), pr,
@@ -702,8 +703,9 @@ static void gen_map(rng_t *r, call_t *c, int valid) {
    automatic grid of ~1 s, only rarely); the sinusoid (NULL) mostly, else a few samples of
    one (sometimes shifted: an uneven profile; sometimes < 4 samples or one not finite); NULL
    pointers; the profile's a* broken too. Pointer bits: cycle 0-3 P_fc P_pf P_snap W_star,
-   4 errors, 5 n_used; trace 0-3 P_star gbar a_star b_star, 4-6 stable_load stable_gap
-   event, 7 n_points, 8 n_used; profile 0-2 x_star traction gap, 3 state, 4 n_points. */
+   4 P_fc_peak, 5 errors, 6 n_used; trace 0-3 P_star gbar a_star b_star, 4-6 stable_load
+   stable_gap event, 7 n_points, 8 n_used; profile 0-2 x_star traction gap, 3 state, 4
+   n_points. */
 static int lj_bad_n(const call_t *c);
 static int lj_bad_profile(const call_t *c);
 static void gen_lj(rng_t *r, call_t *c, int valid) {
@@ -715,8 +717,8 @@ static void gen_lj(rng_t *r, call_t *c, int valid) {
    double u = unif(r), shift;
    int k, trace = c->family == F_LJ_TRACE, prof = c->family == F_LJ_PROFILE;
    /* pointer bits: all, optional, required (the arrays only when capacity > 0) */
-   unsigned all = trace ? 0x1FFu : prof ? 0x1Fu : 0x3Fu;
-   unsigned opt = trace ? 0x170u : prof ? 0x08u : 0x30u;
+   unsigned all = trace ? 0x1FFu : prof ? 0x1Fu : 0x7Fu;
+   unsigned opt = trace ? 0x170u : prof ? 0x08u : 0x70u;
    unsigned arrays = trace ? 0x0Fu : prof ? 0x07u : 0x0Fu;
    int broken = !valid && unif(r) < 0.85; /* break one argument (the others mostly run) */
    valid = valid && unif(r) < 0.3; /* valid calls cost 20-130 ms: a sixth of them */
@@ -749,7 +751,7 @@ static void gen_lj(rng_t *r, call_t *c, int valid) {
    if (c->null_mask == 0 || unif(r) < 0.5) /* the optional outputs NULL or not */
       c->null_mask |= opt & (unsigned)next_u64(r);
    if (!valid && unif(r) < 0.15)
-      c->null_mask |= unif(r) < 0.8 ? 1u << below(r, trace ? 9 : prof ? 5 : 6)
+      c->null_mask |= unif(r) < 0.8 ? 1u << below(r, trace ? 9 : prof ? 5 : 7)
                                     : (unsigned)next_u64(r) & all;
    if (valid) c->null_mask &= c->family == F_LJ_CYCLE || c->capacity > 0 ? opt : opt | arrays;
    if (broken && !lj_bad_n(c) && !lj_bad_profile(c) && c->mu != 0 &&
@@ -1758,8 +1760,8 @@ static void check_gap_critical(const call_t *c, int st, int invalid) {
                 v[0], v[4], v[8], v[7], v[9]);
 }
 
-/* wa_lj_cycle: P_fc, P_pf, P_snap, W_star in dbuf[0][0..3], errors in dbuf[1], n_used in
-   iscalar[0]; wa_lj_trace: P_star, gbar, a_star, b_star in dbuf[0..3], stable_load,
+/* wa_lj_cycle: P_fc, P_pf, P_snap, W_star, P_fc_peak in dbuf[0][0..4], errors in dbuf[1],
+   n_used in iscalar[0]; wa_lj_trace: P_star, gbar, a_star, b_star in dbuf[0..3], stable_load,
    stable_gap, event in ibuf[0..2], n_points and n_used in iscalar[0..1]; wa_lj_profile:
    x_star, traction, gap in dbuf[0..2], state[4] in dbuf[3] (its buffers filled to at least
    4 elements), n_points in iscalar[0]. The samples are passed from lj_prof (read only). */
@@ -1770,10 +1772,10 @@ static int run_lj(const call_t *c, int msg) {
    memcpy(lj_prof, c->prof, sizeof lj_prof);
    lib_call();
    if (c->family == F_LJ_CYCLE) {
-      fill_buffers(4);
+      fill_buffers(5);
       return wa_lj_cycle(c->alpha, c->mu, c->n_grid, c->n_profile, prof, P(0, D(0)),
-                         P(1, D(0) + 1), P(2, D(0) + 2), P(3, D(0) + 3), P(4, D(1)),
-                         P(5, IS(0)), NMSG(c, msg));
+                         P(1, D(0) + 1), P(2, D(0) + 2), P(3, D(0) + 3), P(4, D(0) + 4),
+                         P(5, D(1)), P(6, IS(0)), NMSG(c, msg));
    }
    if (c->family == F_LJ_PROFILE) {
       fill_buffers(c->capacity > 4 ? c->capacity : 4);
@@ -1813,16 +1815,18 @@ static void check_lj_cycle(const call_t *c, int st, int invalid) {
    check_status(c, st, 0x2F, invalid); /* never WA_CAPACITY_TOO_SMALL */
    if (memcmp(lj_prof, c->prof, sizeof lj_prof) != 0)
       violation(c, K_OVERRUN, "the input profile was modified");
-   for (k = 0; k < 4; k++) {
+   for (k = 0; k < 5; k++) { /* value 4, P_fc_peak, optional (NULL: not written) */
       int want_nan = st != WA_OK;
       if (!(nm & (1u << k)) && (want_nan ? !isnan(v[k]) : !isfinite(v[k])))
          violation(c, want_nan ? K_FAIL_OUTPUT : K_NONFINITE, "status %d: value %d %.17g", st,
                    k, v[k]);
-      if (!(nm & 16u) && (want_nan ? !isnan(e[k]) : !(e[k] >= 0 && isfinite(e[k]))))
+      if (!(nm & 32u) && (want_nan ? !isnan(e[k]) : !(e[k] >= 0 && isfinite(e[k]))))
          violation(c, want_nan ? K_FAIL_OUTPUT : K_NONFINITE, "status %d: errors[%d] %.17g", st,
                    k, e[k]);
    }
-   if (nm & 32u) return;
+   if ((nm & 16u) && !is_dsent(v[4]))
+      violation(c, K_OVERRUN, "P_fc_peak NULL, yet dbuf[0][4] was written: %.17g", v[4]);
+   if (nm & 64u) return;
    if (st != WA_OK && n_used != 0)
       violation(c, K_FAIL_OUTPUT, "status %d with n_used %d", st, n_used);
    if (st == WA_OK && (c->n_grid != 0 ? n_used != c->n_grid
@@ -1830,6 +1834,9 @@ static void check_lj_cycle(const call_t *c, int st, int invalid) {
       violation(c, K_STATE, "n %d, n_used %d", c->n_grid, n_used);
    if (st == WA_OK && !(nm & 3u) && !(v[0] >= v[1]))
       violation(c, K_ORDER, "P_fc %.17g < P_pf %.17g", v[0], v[1]);
+   /* b* >= a*: on loading b* reaches 1/2 no later than a* (the load never falls) */
+   if (st == WA_OK && !(nm & 17u) && !(v[4] <= v[0] + 1e-9 * (1 + fabs(v[0]))))
+      violation(c, K_ORDER, "P_fc_peak %.17g > P_fc %.17g", v[4], v[0]);
 }
 
 static int ok_lj_event(int e) { return e == 0 || e == 1 || e == 14 || e == 5 || e == 15 || e == 8; }
@@ -2219,7 +2226,7 @@ static int used_elements(const call_t *c, int st) {
    }
    if (f == F_PROFILE || f == F_GAP_LAW) return c->capacity > 0 ? c->capacity : 0;
    if (f == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
-   if (f == F_LJ_CYCLE) return 4;
+   if (f == F_LJ_CYCLE) return 5;
    if (f == F_LJ_TRACE) {
       if ((st != WA_OK && st != WA_CAPACITY_TOO_SMALL) || (c->null_mask & 128u)) return 0;
       n = *IS(0) < c->capacity ? *IS(0) : c->capacity;
@@ -2258,7 +2265,7 @@ static int filled_elements(const call_t *c) {
        c->family == F_GAP_PATH || c->family == F_GAP_LAW)
       return c->capacity > 0 ? c->capacity : 0;
    if (c->family == F_GAP_CRITICAL) return WA_GAP_CRITICAL_COUNT;
-   if (c->family == F_LJ_CYCLE) return 4;
+   if (c->family == F_LJ_CYCLE) return 5;
    if (c->family == F_LJ_TRACE) return c->capacity > 0 ? c->capacity : 0;
    if (c->family == F_LJ_PROFILE) return c->capacity > 4 ? c->capacity : 4;
    return 0;
