@@ -335,7 +335,8 @@ int wa_gap_critical(int model, double alpha, double mu, double *values, char *me
    (0: automatic); profile NULL is the sinusoid 1 - cos 2 pi x*, else n_profile >= 4
    heights over Delta at x* = j/n_profile (n_profile is ignored when profile is NULL).
    A grid cap exceeded (automatic grid > 2048, n > 16384 / 8192 / 2048 uneven) is
-   WA_INVALID_ARGUMENT. */
+   WA_INVALID_ARGUMENT, and so is a law whose range eps/Delta exceeds 1e5 (mu too small
+   for alpha: the far gaps' rounding would swamp the profile). */
 
 /* The load- and gap-controlled cycle: P_fc*, P_pf*, the snap load (the last jump on
    loading), W* (over p* Delta) and (NULL allowed) P_fc_peak*, the load at which b* first

@@ -94,6 +94,12 @@ module wa_bem_solver
    !> steps scaled by the law's peak tension) on one core (doc/accuracy-performance.md); a
    !> finer automatic grid is refused.
    integer, parameter :: lj_max_auto_n = 2048
+   !> Largest range eps/Delta of the law: the trace starts with gaps of about 500 eps, whose
+   !> rounding (500 eps 1.1e-16) must stay far below the profile's amplitude (1): at 1e5
+   !> it is 6e-9. Beyond it the profile is lost in the gap's last bits (the fuzzer's
+   !> alpha 5.5e7, mu 4.8e-5, eps = 6.9e14: a load of -1843 from rounding noise while the
+   !> state's tractions mean -1.5e-7).
+   real(wp), parameter :: lj_max_range = 1.0e5_wp
    !> Grid points the automatic N puts on the interaction zone
    real(wp), parameter :: points_per_zone = 12.0_wp
 
@@ -150,7 +156,8 @@ contains
       !> wa_ok; wa_invalid_argument for bad params, mu = 0, a bad n or n_max or a profile of
       !> fewer than 4 samples; wa_capacity_too_small where the automatic grid would exceed
       !> its cap (n_max, default lj_max_auto_n = 2048; the message names the N needed) or
-      !> the grid gives more than lj_max_unknowns = 8193 unknowns
+      !> the grid gives more than lj_max_unknowns = 8193 unknowns, or the law's range
+      !> eps/Delta exceeds lj_max_range = 1e5
       integer, intent(out) :: status
       !> Receives the reason on failure (the bad argument and its valid range, or the cap)
       character(len=*), intent(inout), optional :: errmsg
@@ -172,6 +179,15 @@ contains
       if (params%mu <= 0.0_wp) then
          call set_error(wa_invalid_argument, "mu = 0 has no Lennard-Jones law (its range "// &
             "would be infinite): mu must be > 0", status, errmsg)
+         return
+      end if
+      problem%law = lj_law(params%alpha, params%mu)
+      if (problem%law%eps > lj_max_range) then
+         write (text, '(es10.3)') problem%law%eps
+         call set_error(wa_capacity_too_small, "lj: the law's range eps/Delta = "// &
+            trim(adjustl(text))//" = (4 alpha^4)^(1/3)/mu exceeds 1e5 (mu too small for "// &
+            "alpha): the gaps, about 500 eps far apart, would not resolve the profile's "// &
+            "amplitude in double precision", status, errmsg)
          return
       end if
       cap = lj_max_auto_n
@@ -217,7 +233,6 @@ contains
             "n <= 2048 (the dense factorisation's memory cap)", status, errmsg)
          return
       end if
-      problem%law = lj_law(params%alpha, params%mu)
       call setup_operator(problem)
    end subroutine lj_problem
 

@@ -280,7 +280,7 @@ CLAIMS = [
      lambda: str(sum(float(c["dw_rel_P_fc"]) == float("inf") for c in map_cells()))),
     ("doc/user-guide.md", ' cells, MD: {} cells, marked ',
      lambda: str(sum(float(c["md_rel_P_fc"]) == float("inf") for c in map_cells()))),
-    ("doc/user-guide.md", 'ding) DW and MD still lose energy (inf, {} cells',
+    ("doc/user-guide.md", 'exactly) DW and MD still lose energy (inf, {} cells',
      lambda: str(sum(float(c["dw_rel_W_star"]) == float("inf") for c in map_cells()))),
     ("doc/user-guide.md", 'e reachable part, α ≤ 0.1 with μ ≥ 2.5 ({} ok cells; at α',
      lambda: str(len(map_cells(**SMALL_ALPHA_LARGE_MU)))),

@@ -1801,11 +1801,15 @@ static int lj_bad_n(const call_t *c) {
 static int lj_bad_profile(const call_t *c) {
    return c->n_prof > 0 && (c->n_profile < 4 || c->prof_nan);
 }
-/* A grid cap exceeded ("lj: ..."), documented as WA_INVALID_ARGUMENT: the automatic grid
-   (n = 0) beyond 2048 points for these (alpha, mu), or an n beyond 2048 on an uneven
-   profile. */
+/* A cap exceeded ("lj: ..."), documented as WA_INVALID_ARGUMENT: the automatic grid
+   (n = 0) beyond 2048 points for these (alpha, mu), an n beyond 2048 on an uneven
+   profile, or the law's range eps/Delta = (4 alpha^4)^(1/3)/mu beyond 1e5 (within 1e-9:
+   the library computes it in its own order). */
 static int lj_cap_message(const call_t *c, const char *m) {
-   return is_lj(c->family) && !strncmp(m, "lj: ", 4) && (c->n_grid == 0 || c->n_grid > 2048);
+   double eps = cbrt(4.0 * pow(c->alpha, 4.0)) / c->mu;
+   if (!is_lj(c->family) || strncmp(m, "lj: ", 4)) return 0;
+   if (!strncmp(m, "lj: the law's range", 19)) return eps > 1e5 * (1.0 - 1e-9);
+   return c->n_grid == 0 || c->n_grid > 2048;
 }
 
 static void check_lj_cycle(const call_t *c, int st, int invalid) {

@@ -205,6 +205,18 @@ contains
       call check(error, status == wa_capacity_too_small .and. index(msg, "2048") > 0, &
          "automatic grid cap: "//trim(msg))
       if (allocated(error)) return
+      ! a range beyond 1e5 Delta is refused (the fuzzer's alpha 5.5e7, mu 4.8e-5: eps =
+      ! 6.9e14 Delta, the profile lost in the far gaps' rounding gave a load of -1843 from
+      ! noise); alpha 10, mu 0.01 (eps = 3420) stays in
+      call new_params(5.5e7_wp, 4.8e-5_wp, params, status)
+      call lj_problem(params, problem, status, msg, n=16)
+      call check(error, status == wa_capacity_too_small .and. index(msg, "range") > 0 .and. &
+         index(msg, "mu") > 0, "range cap: "//trim(msg))
+      if (allocated(error)) return
+      call new_params(10.0_wp, 0.01_wp, params, status)
+      call lj_problem(params, problem, status, msg, n=64)
+      call check(error, status == wa_ok, "alpha 10, mu 0.01: "//trim(msg))
+      if (allocated(error)) return
       ! n_max raises the automatic grid's cap (alpha 0.3, mu 10 needs N = 8192), a zone
       ! beyond it is refused naming the N it needs (mu 30: 65536), and n_max outside
       ! [128, 16384] is refused naming n_max
