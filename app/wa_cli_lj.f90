@@ -315,9 +315,16 @@ contains
             if (status == wa_ok) cycle
             n_failed = n_failed + 1
             call progress_end(progress)
-            write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
-               format_real(alpha(j))//", mu = "//format_real(mu(i))//": "// &
-               status_message(status)//": "//trim(msg)//" (row written with NaN values)"
+            ! a cap of the solver ("lj: ...") is not an output array too small
+            if (status == wa_capacity_too_small .and. index(msg, "lj: ") == 1) then
+               write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+                  format_real(alpha(j))//", mu = "//format_real(mu(i))//": beyond the "// &
+                  "solver's caps: "//trim(msg)//" (row written with NaN values)"
+            else
+               write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+                  format_real(alpha(j))//", mu = "//format_real(mu(i))//": "// &
+                  status_message(status)//": "//trim(msg)//" (row written with NaN values)"
+            end if
          end do
       end do
       call progress_end(progress)

@@ -1146,6 +1146,18 @@ def test_lj_grid_cap_is_a_usage_error(cli, args, needle):
     assert res.returncode == 2 and needle in res.stderr and res.stdout == ""
 
 
+def test_lj_critical_row_beyond_the_caps_says_so(cli):
+    """A critical row whose (alpha, mu) needs a grid beyond the automatic cap, or whose law's
+    range exceeds 1e5 Delta, is a NaN row (exit 1; the other rows are computed) whose reason
+    names the solver's caps, not an output array "too small"."""
+    for args, needle in ((["--alpha", "0.3", "--mu", "100"], "needs N = "),
+                         (["--alpha", "5.5e7", "--mu", "4.8e-5"], "range eps/Delta")):
+        res = run(cli, "critical", "--model", "lj", *args, check=False)
+        assert res.returncode == 1 and "beyond the solver's caps" in res.stderr
+        assert needle in res.stderr and "capacity too small" not in res.stderr
+        assert "NaN" in res.stdout.splitlines()[-1]
+
+
 def test_lj_bad_profile_line_exits_2(cli, tmp_path):
     f = tmp_path / "bad.txt"
     f.write_text("0\n0.5\nabc\n1\n")
