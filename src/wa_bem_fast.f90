@@ -12,7 +12,7 @@
 !> system is folded to its even half.
 module wa_bem_fast
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_double
-   use wa_kinds, only: wp, pi
+   use wa_kinds, only: wp
    use wa_fftw, only: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
       fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r, &
       fftw_redft00
@@ -25,13 +25,14 @@ module wa_bem_fast
 
    !> The FFTW plans of one period length, owned by the caller's workspace: halfcomplex
    !> there and back on the whole period, or (even) one cosine transform of the half: for
-   !> N/2 even by a halfcomplex transform of length N/2 (dct1, with the tables of
-   !> sin and cos(pi j/(N/2))), else FFTW's own.
+   !> N/2 even by the halfcomplex transform of the even field's whole period (dct1,
+   !> padded), else FFTW's own.
    type :: fft_plans_type
       integer :: np = 0
       logical :: even = .false.
+      !> the cosine transform goes by dct1 (fwd: the halfcomplex plan of length np)
+      logical :: padded = .false.
       type(c_ptr) :: fwd = c_null_ptr, bwd = c_null_ptr
-      real(wp), allocatable :: sn(:), cs(:)
    end type fft_plans_type
 
    !> A two-grid preconditioner at one state: fine slope, Jacobi scaling (on the half
@@ -56,26 +57,22 @@ contains
 
    !> Plans for the circulants of period np (FFTW_ESTIMATE: no trial runs; measured
    !> planning costs more than the whole cycle at N = 512): the halfcomplex transforms of
-   !> length np, or (even) the cosine transform of length np/2 + 1 (FFTW's REDFT00 takes
-   !> a third of the time of the halfcomplex pair at N = 16384, but allocates its buffers
-   !> at every call: dct1 does not).
+   !> length np, or (even) the cosine transform of length np/2 + 1 (FFTW's REDFT00
+   !> allocates its buffers at every call, 10 % of the N = 512 cycle in malloc: dct1,
+   !> on the stack, does not).
    subroutine plans_create(plans, np, even)
       type(fft_plans_type), intent(inout) :: plans
       integer, intent(in) :: np
       !> the fields are even, given on the half period (default false)
       logical, intent(in), optional :: even
       real(c_double), allocatable :: x(:), y(:)
-      integer :: m, j
       call plans_destroy(plans)
       if (present(even)) plans%even = even
       call fftw_make_planner_thread_safe()
       if (plans%even .and. mod(np, 4) == 0) then
-         m = np/2
-         allocate (x(m), y(m))
-         plans%fwd = fftw_plan_r2r_1d(m, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
-         allocate (plans%sn(0:m - 1), plans%cs(0:m - 1))
-         plans%sn = [(sin(pi*j/m), j = 0, m - 1)]
-         plans%cs = [(cos(pi*j/m), j = 0, m - 1)]
+         allocate (x(np), y(np))
+         plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+         plans%padded = .true.
       else if (plans%even) then
          allocate (x(np/2 + 1), y(np/2 + 1))
          plans%fwd = fftw_plan_r2r_1d(np/2 + 1, x, y, fftw_redft00, &
@@ -96,7 +93,7 @@ contains
       plans%bwd = c_null_ptr
       plans%np = 0
       plans%even = .false.
-      if (allocated(plans%sn)) deallocate (plans%sn, plans%cs)
+      plans%padded = .false.
    end subroutine plans_destroy
 
    !> Eigenvalues over np of the symmetric circulant with first column col (real), in
@@ -145,7 +142,7 @@ contains
       real(wp), intent(in) :: symbol(0:), x(0:)
       real(wp), intent(out) :: y(0:)
       real(c_double) :: xw(size(x)), c(size(x))
-      if (allocated(plans%sn)) then
+      if (plans%padded) then
          call dct1(plans, x, c)
          c = c*symbol(0:size(x) - 1)
          call dct1(plans, c, y)
@@ -164,28 +161,22 @@ contains
 
    !> The type-I cosine transform (FFTW's REDFT00) of x(0:m), m = np/2 even,
    !>   y(k) = x(0) + (-1)^k x(m) + 2 sum_{j=1}^{m-1} x(j) cos(pi j k/m),
-   !> by one halfcomplex transform of length m of u(j) = (x(j) + x(m-j))/2 - sin(pi j/m)
-   !> (x(j) - x(m-j)): its cosine sums are y(2k)/2 and its sine sums the differences
-   !> (y(2k+1) - y(2k-1))/2 (the classical reduction, Numerical Recipes' cosft1).
+   !> as the real part of the DFT of the even field's whole period (x(j), j = 0..m, then
+   !> x(2m-j)) by one halfcomplex transform of length 2m. Not the classical reduction to
+   !> length m (Numerical Recipes' cosft1): it gets the odd modes by a running sum of
+   !> differences, whose rounding grows with m and, times the stiffness's symbol (up to
+   !> N/2), set a floor of 1e-10 on the residual at N = 2048 that stalled Newton.
    subroutine dct1(plans, x, y)
       type(fft_plans_type), intent(in) :: plans
       real(wp), intent(in) :: x(0:)
       real(wp), intent(out) :: y(0:)
-      real(c_double) :: u(0:size(x) - 2), h(0:size(x) - 2)
-      integer :: m, j, k
+      real(c_double) :: u(0:2*size(x) - 3), h(0:2*size(x) - 3)
+      integer :: m
       m = size(x) - 1
-      u(0) = 0.5_wp*(x(0) + x(m))
-      do j = 1, m - 1
-         u(j) = 0.5_wp*(x(j) + x(m - j)) - plans%sn(j)*(x(j) - x(m - j))
-      end do
+      u(0:m) = x
+      u(m + 1:2*m - 1) = x(m - 1:1:-1)
       call fftw_execute_r2r(plans%fwd, u, h)
-      y(1) = x(0) - x(m) + 2.0_wp*dot_product(x(1:m - 1), plans%cs(1:m - 1))
-      y(0) = 2.0_wp*h(0)
-      do k = 1, m/2 - 1
-         y(2*k) = 2.0_wp*h(k)
-         y(2*k + 1) = y(2*k - 1) - 2.0_wp*h(m - k)
-      end do
-      y(m) = 2.0_wp*h(m/2)
+      y = h(0:m)
    end subroutine dct1
 
    !> First column of the coarse circulant P^T K P (coarse period nc = np/ratio) from the
