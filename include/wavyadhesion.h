@@ -31,7 +31,9 @@
  * - every function is thread safe (no global state);
  * - the 0.2 names (_msg twins, _gap variants, wa_critical_sweep_status,
  *   wa_adhesion_map_control) are forwards in the marked block at the end, removed in 0.4.
- * Link with: -lwavyadhesion -lgfortran -lgsl -lgslcblas -lm
+ * Link with: -lwavyadhesion -lgfortran -lgsl -lgslcblas -lm; against the static library
+ *   add -lfftw3_threads -lfftw3 (or take them all from pkg-config --static --libs
+ *   wavyadhesion).
  */
 #pragma once
 
