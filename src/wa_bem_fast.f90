@@ -14,8 +14,7 @@ module wa_bem_fast
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_double
    use wa_kinds, only: wp
    use wa_fftw, only: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
-      fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r, &
-      fftw_redft00
+      fftw_make_planner_thread_safe, fftw_estimate, fftw_unaligned, fftw_r2hc, fftw_hc2r
    use wa_bem_dense, only: ldl_type, ldl_factor, ldl_solve
    implicit none
    private
@@ -24,14 +23,11 @@ module wa_bem_fast
    public :: twogrid_type, coarse_stiffness, twogrid_setup, twogrid_apply
 
    !> The FFTW plans of one period length, owned by the caller's workspace: halfcomplex
-   !> there and back on the whole period, or (even) one cosine transform of the half: for
-   !> N/2 even by the halfcomplex transform of the even field's whole period (dct1,
-   !> padded), else FFTW's own.
+   !> there and back on the whole period, or (even) the halfcomplex transform of length np
+   !> behind the cosine transform of the half period (dct1).
    type :: fft_plans_type
       integer :: np = 0
       logical :: even = .false.
-      !> the cosine transform goes by dct1 (fwd: the halfcomplex plan of length np)
-      logical :: padded = .false.
       type(c_ptr) :: fwd = c_null_ptr, bwd = c_null_ptr
    end type fft_plans_type
 
@@ -57,9 +53,8 @@ contains
 
    !> Plans for the circulants of period np (FFTW_ESTIMATE: no trial runs; measured
    !> planning costs more than the whole cycle at N = 512): the halfcomplex transforms of
-   !> length np, or (even) the cosine transform of length np/2 + 1 (FFTW's REDFT00
-   !> allocates its buffers at every call, 10 % of the N = 512 cycle in malloc: dct1,
-   !> on the stack, does not).
+   !> length np there and back, or (even) the forward one only, for dct1 (FFTW's own
+   !> REDFT00 allocates its buffers at every call, 10 % of the N = 512 cycle in malloc).
    subroutine plans_create(plans, np, even)
       type(fft_plans_type), intent(inout) :: plans
       integer, intent(in) :: np
@@ -69,19 +64,10 @@ contains
       call plans_destroy(plans)
       if (present(even)) plans%even = even
       call fftw_make_planner_thread_safe()
-      if (plans%even .and. mod(np, 4) == 0) then
-         allocate (x(np), y(np))
-         plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
-         plans%padded = .true.
-      else if (plans%even) then
-         allocate (x(np/2 + 1), y(np/2 + 1))
-         plans%fwd = fftw_plan_r2r_1d(np/2 + 1, x, y, fftw_redft00, &
-            ior(fftw_estimate, fftw_unaligned))
-      else
-         allocate (x(np), y(np))
-         plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+      allocate (x(np), y(np))
+      plans%fwd = fftw_plan_r2r_1d(np, x, y, fftw_r2hc, ior(fftw_estimate, fftw_unaligned))
+      if (.not. plans%even) &
          plans%bwd = fftw_plan_r2r_1d(np, y, x, fftw_hc2r, ior(fftw_estimate, fftw_unaligned))
-      end if
       plans%np = np
    end subroutine plans_create
 
@@ -93,7 +79,6 @@ contains
       plans%bwd = c_null_ptr
       plans%np = 0
       plans%even = .false.
-      plans%padded = .false.
    end subroutine plans_destroy
 
    !> Eigenvalues over np of the symmetric circulant with first column col (real), in
@@ -142,7 +127,7 @@ contains
       real(wp), intent(in) :: symbol(0:), x(0:)
       real(wp), intent(out) :: y(0:)
       real(c_double) :: xw(size(x)), c(size(x))
-      if (plans%padded) then
+      if (plans%even) then
          call dct1(plans, x, c)
          c = c*symbol(0:size(x) - 1)
          call dct1(plans, c, y)
@@ -151,15 +136,11 @@ contains
       xw = x
       call fftw_execute_r2r(plans%fwd, xw, c)
       c = c*symbol(0:size(x) - 1)
-      if (plans%even) then
-         call fftw_execute_r2r(plans%fwd, c, xw)
-      else
-         call fftw_execute_r2r(plans%bwd, c, xw)
-      end if
+      call fftw_execute_r2r(plans%bwd, c, xw)
       y = xw
    end subroutine transform
 
-   !> The type-I cosine transform (FFTW's REDFT00) of x(0:m), m = np/2 even,
+   !> The type-I cosine transform (FFTW's REDFT00) of x(0:m), m = np/2,
    !>   y(k) = x(0) + (-1)^k x(m) + 2 sum_{j=1}^{m-1} x(j) cos(pi j k/m),
    !> as the real part of the DFT of the even field's whole period (x(j), j = 0..m, then
    !> x(2m-j)) by one halfcomplex transform of length 2m. Not the classical reduction to

@@ -29,7 +29,7 @@ module wa_bem_path
    implicit none
    private
 
-   public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, lj_profile
+   public :: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off
    public :: lj_stage_loading, lj_stage_unloading, lj_stage_approach, lj_stage_retraction
    public :: lj_path_jump_start, lj_path_jump_end, lj_path_full_contact_reached, &
       lj_path_full_contact_left, lj_path_pull_off
@@ -96,29 +96,6 @@ contains
       t = (15.0_wp/(136.0_wp*c9))**(1.0_wp/6.0_wp)
       p_pf = -(8.0_wp*law%dgamma/(3.0_wp*sqrt(2.0_wp*law%eps)))*(9.0_wp/34.0_wp)*t**2.5_wp
    end function lj_rigid_pull_off
-
-   !> Gap h/Delta and traction sigma/p* (tension positive) of state z over the whole
-   !> period, at x = j/N, j = 0..N-1.
-   pure subroutine lj_profile(problem, z, x, gap, traction)
-      !> The problem the state was traced for (N = its grid points per period)
-      type(lj_problem_type), intent(in) :: problem
-      !> A state of that problem, e.g. a column of lj_branch_type%z: the gaps over Delta at
-      !> the n_unknowns unknown nodes, then P*; only the gaps are read
-      real(wp), intent(in) :: z(:)
-      !> Receives the node positions x* = j/N, j = 0..N-1 (size N)
-      real(wp), intent(out) :: x(:)
-      !> Receives the gap h/Delta at x* over the whole period (an even state unfolded; size N)
-      real(wp), intent(out) :: gap(:)
-      !> Receives the traction sigma(h)/p* of the law at x* (tension positive; size N)
-      real(wp), intent(out) :: traction(:)
-      real(wp), allocatable :: slope(:)
-      integer :: j, np
-      np = problem%grid%n_period
-      allocate (slope(np))
-      x = [(real(j, wp)/np, j = 0, np - 1)]
-      gap = full_period(problem%grid, z(1:problem%grid%n))
-      call law_eval(problem%law, gap, traction, slope)
-   end subroutine lj_profile
 
    !> Trace, both paths and the critical values at the grid of n (0 or absent: automatic)
    !> and at half that grid, whose difference is the error estimate (skipped with

@@ -12,15 +12,16 @@
 !> interpolated (the point's own a* is returned).
 module wa_bem_state
    use wa_kinds, only: wp
-   use wa_status, only: wa_ok
+   use wa_status, only: wa_ok, wa_invalid_argument, set_error
    use wa_validate, only: check_range
+   use wa_bem_law, only: law_eval
+   use wa_bem_elastic, only: full_period
    use wa_bem_solver, only: lj_problem_type
-   use wa_bem_trace, only: lj_branch_type, lj_trace, lj_nearest_state
-   use wa_bem_path, only: lj_profile
+   use wa_bem_trace, only: lj_branch_type, lj_trace
    implicit none
    private
 
-   public :: lj_state_type, lj_state_at_a
+   public :: lj_state_type, lj_state_at_a, lj_nearest_state, lj_profile
 
    !> One traced state and its fields at the N grid nodes, x* from -1/2.
    type :: lj_state_type
@@ -85,5 +86,76 @@ contains
       state%stable_load = branch%stable_load(k)
       state%stable_gap = branch%stable_gap(k)
    end subroutine lj_state_at_a
+
+   !> The traced state with a* nearest a_star, among the load-stable states when there
+   !> are any (the state a profile draws); the first such point on a tie.
+   pure subroutine lj_nearest_state(branch, a_star, k, status, errmsg, among_stable)
+      !> A curve traced by lj_trace (n >= 1 points)
+      type(lj_branch_type), intent(in) :: branch
+      !> The contact half-width a* wanted, in [0, 1/2]
+      real(wp), intent(in) :: a_star
+      !> Index of the chosen point in branch (1..branch%n); 0 on failure
+      integer, intent(out) :: k
+      !> wa_ok; wa_invalid_argument where a_star is outside [0, 1/2] (or NaN) or the
+      !> branch has no point
+      integer, intent(out) :: status
+      !> Receives the reason on failure (the argument and its valid range)
+      character(len=*), intent(inout), optional :: errmsg
+      !> True where the choice was among the load-stable states (there are some)
+      logical, intent(out), optional :: among_stable
+      real(wp) :: miss
+      integer :: i
+      logical :: any_stable
+
+      k = 0
+      if (present(among_stable)) among_stable = .false.
+      if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp)) then
+         call set_error(wa_invalid_argument, "a_star is outside its valid range [0, 1/2]", &
+            status, errmsg)
+         return
+      end if
+      if (branch%n < 1) then
+         call set_error(wa_invalid_argument, "branch has no point (n < 1): trace it first", &
+            status, errmsg)
+         return
+      end if
+      status = wa_ok
+      any_stable = any(branch%stable_load(1:branch%n))
+      if (present(among_stable)) among_stable = any_stable
+      miss = huge(1.0_wp)
+      do i = 1, branch%n
+         if (any_stable .and. .not. branch%stable_load(i)) cycle
+         if (abs(branch%a_star(i) - a_star) < miss) then
+            miss = abs(branch%a_star(i) - a_star)
+            k = i
+         end if
+      end do
+      ! a NaN a* everywhere would leave no choice: take the first candidate
+      if (k == 0) k = merge(findloc(branch%stable_load(1:branch%n), .true., dim=1), 1, &
+         any_stable)
+   end subroutine lj_nearest_state
+
+   !> Gap h/Delta and traction sigma/p* (tension positive) of state z over the whole
+   !> period, at x = j/N, j = 0..N-1.
+   pure subroutine lj_profile(problem, z, x, gap, traction)
+      !> The problem the state was traced for (N = its grid points per period)
+      type(lj_problem_type), intent(in) :: problem
+      !> A state of that problem, e.g. a column of lj_branch_type%z: the gaps over Delta at
+      !> the n_unknowns unknown nodes, then P*; only the gaps are read
+      real(wp), intent(in) :: z(:)
+      !> Receives the node positions x* = j/N, j = 0..N-1 (size N)
+      real(wp), intent(out) :: x(:)
+      !> Receives the gap h/Delta at x* over the whole period (an even state unfolded; size N)
+      real(wp), intent(out) :: gap(:)
+      !> Receives the traction sigma(h)/p* of the law at x* (tension positive; size N)
+      real(wp), intent(out) :: traction(:)
+      real(wp), allocatable :: slope(:)
+      integer :: j, np
+      np = problem%grid%n_period
+      allocate (slope(np))
+      x = [(real(j, wp)/np, j = 0, np - 1)]
+      gap = full_period(problem%grid, z(1:problem%grid%n))
+      call law_eval(problem%law, gap, traction, slope)
+   end subroutine lj_profile
 
 end module wa_bem_state

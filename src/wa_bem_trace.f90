@@ -29,7 +29,7 @@ module wa_bem_trace
    private
 
    public :: lj_branch_type, lj_trace_options, lj_trace, lj_point_at, branch_append, &
-      fold_crossing, lj_nearest_state
+      fold_crossing
    public :: lj_event_none, lj_event_load_fold, lj_event_gap_fold, &
       lj_event_full_contact, lj_event_contact, lj_event_end
 
@@ -106,54 +106,6 @@ contains
       call trace_with(problem, pre, branch, status, errmsg, options)
       call jacobian_free(pre)
    end subroutine lj_trace
-
-   !> The traced state with a* nearest a_star, among the load-stable states when there
-   !> are any (the state a profile draws); the first such point on a tie.
-   pure subroutine lj_nearest_state(branch, a_star, k, status, errmsg, among_stable)
-      !> A curve traced by lj_trace (n >= 1 points)
-      type(lj_branch_type), intent(in) :: branch
-      !> The contact half-width a* wanted, in [0, 1/2]
-      real(wp), intent(in) :: a_star
-      !> Index of the chosen point in branch (1..branch%n); 0 on failure
-      integer, intent(out) :: k
-      !> wa_ok; wa_invalid_argument where a_star is outside [0, 1/2] (or NaN) or the
-      !> branch has no point
-      integer, intent(out) :: status
-      !> Receives the reason on failure (the argument and its valid range)
-      character(len=*), intent(inout), optional :: errmsg
-      !> True where the choice was among the load-stable states (there are some)
-      logical, intent(out), optional :: among_stable
-      real(wp) :: miss
-      integer :: i
-      logical :: any_stable
-
-      k = 0
-      if (present(among_stable)) among_stable = .false.
-      if (.not. (a_star >= 0.0_wp .and. a_star <= 0.5_wp)) then
-         call set_error(wa_invalid_argument, "a_star is outside its valid range [0, 1/2]", &
-            status, errmsg)
-         return
-      end if
-      if (branch%n < 1) then
-         call set_error(wa_invalid_argument, "branch has no point (n < 1): trace it first", &
-            status, errmsg)
-         return
-      end if
-      status = wa_ok
-      any_stable = any(branch%stable_load(1:branch%n))
-      if (present(among_stable)) among_stable = any_stable
-      miss = huge(1.0_wp)
-      do i = 1, branch%n
-         if (any_stable .and. .not. branch%stable_load(i)) cycle
-         if (abs(branch%a_star(i) - a_star) < miss) then
-            miss = abs(branch%a_star(i) - a_star)
-            k = i
-         end if
-      end do
-      ! a NaN a* everywhere would leave no choice: take the first candidate
-      if (k == 0) k = merge(findloc(branch%stable_load(1:branch%n), .true., dim=1), 1, &
-         any_stable)
-   end subroutine lj_nearest_state
 
    !> lj_trace with the caller's workspace pre.
    subroutine trace_with(problem, pre, branch, status, errmsg, options)

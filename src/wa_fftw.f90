@@ -16,8 +16,6 @@ module wa_fftw
    integer(c_int), parameter, public :: fftw_estimate = 64, fftw_unaligned = 2
    !> Kinds of r2r transform: real to halfcomplex and back (unnormalised)
    integer(c_int), parameter, public :: fftw_r2hc = 0, fftw_hc2r = 1
-   !> The type-I cosine transform (an even sequence's DFT from its half, unnormalised)
-   integer(c_int), parameter, public :: fftw_redft00 = 3
 
    public :: fftw_plan_r2r_1d, fftw_execute_r2r, fftw_destroy_plan, &
       fftw_make_planner_thread_safe

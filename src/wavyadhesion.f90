@@ -216,13 +216,13 @@ module wavyadhesion
    use wa_bem_solver, only: lj_problem_type, lj_problem, lj_auto_n, lj_zone_length, &
       lj_max_unknowns, lj_max_auto_n
    use wa_bem_path, only: lj_path_type, lj_cycle_type, lj_paths, lj_cycle, lj_rigid_pull_off, &
-      lj_profile, lj_stage_loading, &
+      lj_stage_loading, &
       lj_stage_unloading, lj_stage_approach, lj_stage_retraction, lj_path_jump_start, &
       lj_path_jump_end, lj_path_full_contact_reached, lj_path_full_contact_left, lj_path_pull_off
-   use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, lj_nearest_state, &
+   use wa_bem_trace, only: lj_branch_type, lj_trace_options, lj_trace, &
       lj_event_none, &
       lj_event_load_fold, lj_event_gap_fold, lj_event_full_contact, lj_event_contact, lj_event_end
-   use wa_bem_state, only: lj_state_type, lj_state_at_a
+   use wa_bem_state, only: lj_state_type, lj_state_at_a, lj_nearest_state, lj_profile
    implicit none
    private
 
