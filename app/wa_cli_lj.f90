@@ -289,6 +289,7 @@ contains
       real(wp), allocatable :: samples(:)
       character(len=160), allocatable :: notes(:)
       character(len=256) :: msg
+      character(len=:), allocatable :: why
       integer, allocatable :: row_stat(:, :)
       integer :: i, j, n, status, n_failed
       real(wp) :: nan
@@ -316,15 +317,12 @@ contains
             n_failed = n_failed + 1
             call progress_end(progress)
             ! a cap of the solver ("lj: ...") is not an output array too small
-            if (status == wa_capacity_too_small .and. index(msg, "lj: ") == 1) then
-               write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
-                  format_real(alpha(j))//", mu = "//format_real(mu(i))//": beyond the "// &
-                  "solver's caps: "//trim(msg)//" (row written with NaN values)"
-            else
-               write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
-                  format_real(alpha(j))//", mu = "//format_real(mu(i))//": "// &
-                  status_message(status)//": "//trim(msg)//" (row written with NaN values)"
-            end if
+            why = status_message(status)
+            if (status == wa_capacity_too_small .and. index(msg, "lj: ") == 1) &
+               why = "beyond the solver's caps"
+            write (error_unit, '(a)') "wavyadhesion: critical: alpha = "// &
+               format_real(alpha(j))//", mu = "//format_real(mu(i))//": "//why//": "// &
+               trim(msg)//" (row written with NaN values)"
          end do
       end do
       call progress_end(progress)
